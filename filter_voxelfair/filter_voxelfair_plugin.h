@@ -1,0 +1,34 @@
+// MeshLab filters of voxelfair. A thin dispatcher: each filter converts CMeshO to the arrays of
+// a host-free unit in libvoxelfair/, runs it, and writes the result back.
+#pragma once
+
+#include <common/interfaces.h>
+
+#include <QObject>
+
+class FilterVoxelfairPlugin : public QObject, public MeshFilterInterface {
+    Q_OBJECT
+    MESHLAB_PLUGIN_IID_EXPORTER(MESH_FILTER_INTERFACE_IID)
+    Q_INTERFACES(MeshFilterInterface)
+
+public:
+    enum FilterId { FP_VOXEL_INFO };
+
+    FilterVoxelfairPlugin();
+
+    QString pluginName() const override { return "FilterVoxelfair"; }
+    QString filterName(FilterIDType filter) const override;
+    QString filterInfo(FilterIDType filter) const override;
+    FilterClass getClass(QAction *action) override;
+    FILTER_ARITY filterArity(QAction *) const override { return SINGLE_MESH; }
+    int getPreConditions(QAction *action) const override;
+    int getRequirements(QAction *action) override;
+    int postCondition(QAction *action) const override;
+    void initParameterSet(QAction *action, MeshModel &m, RichParameterList &parameters) override;
+    bool applyFilter(QAction *action, MeshDocument &md, const RichParameterList &parameters,
+                     vcg::CallBackPos *cb) override;
+
+private:
+    // Sets errorMessage and logs it (meshlabserver never prints errorMessage).
+    bool fail(const QString &message);
+};

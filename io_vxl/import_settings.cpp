@@ -1,0 +1,86 @@
+#include "import_settings.h"
+
+#include <QByteArray>
+#include <array>
+#include <cstdlib>
+
+namespace voxelfair {
+
+namespace {
+
+struct NamedColour {
+    const char *name;
+    Rgb rgb;
+};
+
+// House colours offered for the remap range; the first entry keeps the palette's own ramp.
+const std::array<NamedColour, 10> kHouseColours = {{
+    {"Palette's own", {}},
+    {"Red", {255, 0, 0}},
+    {"Blue", {0, 90, 255}},
+    {"Green", {0, 190, 40}},
+    {"Gold", {255, 200, 0}},
+    {"Orange", {255, 120, 0}},
+    {"Teal", {0, 200, 200}},
+    {"Purple", {150, 40, 220}},
+    {"Pink", {255, 100, 180}},
+    {"Grey", {170, 170, 170}},
+}};
+
+QString env(const char *name) { return QString::fromLocal8Bit(qgetenv(name)); }
+
+int envInt(const char *name, int fallback) {
+    bool ok = false;
+    const int value = env(name).trimmed().toInt(&ok);
+    return ok ? value : fallback;
+}
+
+int houseColourIndexFromEnv() {
+    const QString wanted = env("VOXELFAIR_HOUSE_COLOUR").trimmed();
+    for (size_t i = 1; i < kHouseColours.size(); ++i)
+        if (wanted.compare(kHouseColours[i].name, Qt::CaseInsensitive) == 0) return int(i);
+    return 0;
+}
+
+}  // namespace
+
+void declareImportParameters(RichParameterList &parameters, const QStringList &sectionNames) {
+    parameters.addParam(RichOpenFile(
+        "paletteFile", env("VOXELFAIR_PALETTE"), QStringList() << "*.pal", "Palette file (.pal)",
+        "A Westwood 6-bit .pal (768 bytes) or JASC-PAL file giving the voxels' colours, e.g. unittem.pal. "
+        "Empty: the palette embedded in the .vxl, or the built-in default palette when the embedded one "
+        "is all zeros."));
+
+    QStringList houseNames;
+    for (const NamedColour &c : kHouseColours) houseNames << c.name;
+    parameters.addParam(RichEnum("houseColour", houseColourIndexFromEnv(), houseNames, "House colour",
+                                 "Regenerates palette entries 16..31 (the player colour in the game) as a "
+                                 "brightness ramp of this colour, as the game tools do."));
+
+    parameters.addParam(RichInt("frame", envInt("VOXELFAIR_FRAME", 0), "HVA frame",
+                                "The animation frame of the .hva beside the .vxl that places the sections, from 0."));
+
+    QStringList sections;
+    sections << "All sections";
+    for (int i = 0; i < sectionNames.size(); ++i) sections << QString("%1: %2").arg(i).arg(sectionNames[i]);
+    parameters.addParam(RichEnum("section", envInt("VOXELFAIR_SECTION", -1) + 1, sections, "Section",
+                                 "Import every section, or only one."));
+
+    parameters.addParam(RichBool("applyTransforms", envInt("VOXELFAIR_TRANSFORMS", 1) != 0, "Apply section transforms",
+                                 "Place each section with its .hva matrix (or, without an .hva, its own matrix) and "
+                                 "bounds, as the game does. Off: every section in its own voxel space, "
+                                 "one unit per voxel, x and y horizontal, z up."));
+}
+
+ImportSettings readImportSettings(const RichParameterList &parameters) {
+    ImportSettings s;
+    s.paletteFile = parameters.getOpenFileName("paletteFile").trimmed();
+    const int house = parameters.getEnum("houseColour");
+    if (house > 0 && house < int(kHouseColours.size())) s.houseColour = kHouseColours[size_t(house)].rgb;
+    s.frame = parameters.getInt("frame");
+    s.section = parameters.getEnum("section") - 1;
+    s.applyTransforms = parameters.getBool("applyTransforms");
+    return s;
+}
+
+}  // namespace voxelfair

@@ -1,0 +1,36 @@
+// The importer's pre-open parameters: declared for MeshLab's dialog, read back into options.
+//
+// meshlabserver cannot set an importer's parameters, so each default can be overridden by an
+// environment variable; the batch scripts use them:
+//   VOXELFAIR_PALETTE         path of a .pal file (empty: embedded palette, else built-in)
+//   VOXELFAIR_HOUSE_COLOUR    one of the house colour names below, case-insensitive ("none" keeps the palette's)
+//   VOXELFAIR_FRAME           HVA animation frame, from 0
+//   VOXELFAIR_SECTION         section number from 0, or -1 for all sections
+//   VOXELFAIR_TRANSFORMS      1 to place sections by their HVA/tailer matrices, 0 to leave them in voxel space
+#pragma once
+
+#include "formats/palette.h"
+
+#include <common/filter_parameter/rich_parameter_list.h>
+
+#include <QString>
+#include <QStringList>
+#include <optional>
+
+namespace voxelfair {
+
+struct ImportSettings {
+    QString paletteFile;  // empty: none chosen
+    std::optional<Rgb> houseColour;
+    int frame = 0;
+    int section = -1;  // -1: all
+    bool applyTransforms = true;
+};
+
+// Adds the parameters, with defaults from the environment. `sectionNames` fills the section
+// choice (the GUI shows "All sections", then "0: Body", ...).
+void declareImportParameters(RichParameterList &parameters, const QStringList &sectionNames);
+
+ImportSettings readImportSettings(const RichParameterList &parameters);
+
+}  // namespace voxelfair

@@ -1,0 +1,43 @@
+#include "scene_to_meshlab.h"
+
+#include <vcg/complex/algorithms/update/bounding.h>
+#include <vcg/complex/allocate.h>
+
+namespace voxelfair {
+
+int sceneImportMask() {
+    using vcg::tri::io::Mask;
+    return Mask::IOM_VERTCOORD | Mask::IOM_FACEINDEX | Mask::IOM_FACECOLOR | Mask::IOM_FACEQUALITY |
+           Mask::IOM_BITPOLYGONAL;
+}
+
+void sceneToMeshLab(const SceneSurface &surface, MeshModel &model) {
+    CMeshO &m = model.cm;
+    m.Clear();
+    auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(m, surface.positions.size());
+    for (const glm::vec3 &p : surface.positions) {
+        vi->P() = CMeshO::CoordType(p.x, p.y, p.z);
+        ++vi;
+    }
+
+    auto part = vcg::tri::Allocator<CMeshO>::GetPerFaceAttribute<int>(m, kPartAttributeName);
+    auto fi = vcg::tri::Allocator<CMeshO>::AddFaces(m, 2 * surface.quadCount());
+    for (size_t q = 0; q < surface.quadCount(); ++q) {
+        const uint32_t *c = &surface.quads[4 * q];
+        const Rgb colour = surface.quadColours[q];
+        // Quad (a, b, c, d) -> (a, b, c) + (a, c, d); the diagonal a-c is faux in both, so
+        // MeshLab treats the pair as one polygon (edge 2 of the first, edge 0 of the second).
+        const uint32_t triangles[2][3] = {{c[0], c[1], c[2]}, {c[0], c[2], c[3]}};
+        for (int t = 0; t < 2; ++t, ++fi) {
+            for (int k = 0; k < 3; ++k) fi->V(k) = &m.vert[triangles[t][k]];
+            fi->SetF(t == 0 ? 2 : 0);
+            fi->C() = vcg::Color4b(colour.r, colour.g, colour.b, 255);
+            fi->Q() = CMeshO::ScalarType(surface.quadParts[q]);
+            part[fi] = surface.quadParts[q];
+        }
+    }
+    // meshlabserver does not compute the box for polygonal imports: do it here.
+    vcg::tri::UpdateBounding<CMeshO>::Box(m);
+}
+
+}  // namespace voxelfair

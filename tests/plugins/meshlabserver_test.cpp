@@ -1,0 +1,176 @@
+// End-to-end tests through the real meshlabserver: our importer is loaded from the staged
+// runtime, imports .vxl files and MeshLab saves them; the saved PLY must equal what the
+// host-free units compute in this process.
+#include "meshlab_run.h"
+#include "ply_reader.h"
+
+#include "formats/file_bytes.h"
+#include "formats/hva.h"
+#include "formats/vxl.h"
+#include "scene/vxl_scene.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <memory>
+
+using namespace voxelfair;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kModels = std::string(VOXELFAIR_MODELS_DIR) + "/vxl";
+const std::string kPalettes = std::string(VOXELFAIR_MODELS_DIR) + "/pal";
+
+// What io_vxl should produce for `vxlPath` with default settings (and an optional .pal).
+SceneSurface expectedSurface(const std::string &vxlPath, const std::string &palPath = "") {
+    const std::vector<uint8_t> bytes = readFileBytes(vxlPath);
+    const VxlModel model = readVxl(bytes.data(), bytes.size());
+    std::unique_ptr<HvaAnimation> hva;
+    const fs::path hvaPath = fs::path(vxlPath).replace_extension(".hva");
+    if (fs::exists(hvaPath)) {
+        const std::vector<uint8_t> h = readFileBytes(hvaPath.string());
+        hva = std::make_unique<HvaAnimation>(readHva(h.data(), h.size()));
+    }
+    Palette external;
+    VxlSceneOptions options;
+    if (!palPath.empty()) {
+        const std::vector<uint8_t> p = readFileBytes(palPath);
+        external = readPal(p.data(), p.size());
+        options.externalPalette = &external;
+    }
+    return extractSceneSurface(vxlScene(model, hva.get(), options));
+}
+
+// Imports `vxlPath` with meshlabserver and saves an ASCII PLY with face colour and quality.
+// `log` receives what meshlabserver printed, our importer's report included.
+PlyMesh importWithMeshLab(const std::string &vxlPath, const std::map<std::string, std::string> &env = {},
+                          std::string *log = nullptr) {
+    const std::string dir = makeTempDir();
+    const std::string ply = dir + "/out.ply";
+    const MeshlabRun run = runMeshlabServer({"-i", vxlPath, "-o", ply, "-m", "fc", "fq", "sa"}, env);
+    EXPECT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_TRUE(fs::exists(ply)) << "meshlabserver did not save " << ply << "\n" << run.output;
+    if (log) *log = run.output;
+    PlyMesh mesh = fs::exists(ply) ? readAsciiPly(ply) : PlyMesh{};
+    fs::remove_all(dir);
+    return mesh;
+}
+
+// The saved mesh is the expected quad surface: same vertices in order, each quad as two
+// triangles over its four corners, with the quad's colour and section.
+void expectSameSurface(const PlyMesh &ply, const SceneSurface &expected) {
+    ASSERT_EQ(ply.positions.size(), expected.positions.size());
+    ASSERT_EQ(ply.triangles.size(), 2 * expected.quadCount());
+    ASSERT_EQ(ply.faceColours.size(), ply.triangles.size());
+    ASSERT_EQ(ply.faceQuality.size(), ply.triangles.size());
+    for (size_t v = 0; v < ply.positions.size(); ++v)
+        for (int k = 0; k < 3; ++k) ASSERT_NEAR(ply.positions[v][k], expected.positions[v][size_t(k)], 1e-3) << "vertex " << v;
+    for (size_t q = 0; q < expected.quadCount(); ++q) {
+        const uint32_t *c = &expected.quads[4 * q];
+        const auto &t0 = ply.triangles[2 * q], &t1 = ply.triangles[2 * q + 1];
+        EXPECT_EQ(t0, (std::array<uint32_t, 3>{c[0], c[1], c[2]})) << "quad " << q;
+        EXPECT_EQ(t1, (std::array<uint32_t, 3>{c[0], c[2], c[3]})) << "quad " << q;
+        const Rgb rgb = expected.quadColours[q];
+        for (size_t t = 2 * q; t < 2 * q + 2; ++t) {
+            EXPECT_EQ(ply.faceColours[t], (std::array<uint8_t, 4>{rgb.r, rgb.g, rgb.b, 255})) << "face " << t;
+            EXPECT_EQ(ply.faceQuality[t], float(expected.quadParts[q])) << "face " << t;
+        }
+    }
+}
+
+bool haveModels() { return fs::is_directory(kModels); }
+
+std::string writeTempFile(const std::string &name, const std::vector<uint8_t> &bytes) {
+    const std::string path = makeTempDir() + "/" + name;
+    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char *>(bytes.data()), std::streamsize(bytes.size()));
+    return path;
+}
+
+}  // namespace
+
+TEST(MeshlabServer, ImportsTheExampleTankWithColoursAndSections) {
+    const std::string tank = std::string(VOXELFAIR_EXAMPLE_DIR) + "/tank.vxl";
+    std::string log;
+    const PlyMesh ply = importWithMeshLab(tank, {}, &log);
+    const SceneSurface expected = expectedSurface(tank);
+    ASSERT_GT(expected.quadCount(), 1000u);
+    expectSameSurface(ply, expected);
+    // Three sections, each face tagged with its own.
+    EXPECT_EQ(expected.partQuadCounts.size(), 3u);
+    EXPECT_NE(log.find("3 of 3 sections"), std::string::npos) << log;
+    EXPECT_NE(log.find("non-manifold edges"), std::string::npos) << log;
+}
+
+TEST(MeshlabServer, ImportsSharedModelsWithAndWithoutAPalette) {
+    if (!haveModels()) GTEST_SKIP() << "the shared models are absent: " << kModels;
+    for (const char *name : {"3tnk", "hmec", "subapc", "legs", "ttnkbarl"}) {
+        SCOPED_TRACE(name);
+        const std::string vxl = kModels + "/" + name + ".vxl";
+        expectSameSurface(importWithMeshLab(vxl), expectedSurface(vxl));
+    }
+    const std::string cc = kModels + "/cc.vxl", pal = kPalettes + "/ra2_unittem.pal";
+    expectSameSurface(importWithMeshLab(cc, {{"VOXELFAIR_PALETTE", pal}}), expectedSurface(cc, pal));
+}
+
+TEST(MeshlabServer, ReportsManifoldSplitsInTheLog) {
+    if (!haveModels()) GTEST_SKIP() << "the shared models are absent: " << kModels;
+    const std::string vxl = kModels + "/subapc.vxl";
+    const SceneSurface expected = expectedSurface(vxl);
+    std::string log;
+    importWithMeshLab(vxl, {}, &log);
+    const std::string line = std::to_string(expected.stats.nonManifoldEdgesSplit) + " non-manifold edges and " +
+                             std::to_string(expected.stats.nonManifoldVerticesSplit) + " non-manifold vertices split";
+    EXPECT_NE(log.find(line), std::string::npos) << "expected \"" << line << "\" in\n" << log;
+}
+
+// Bad input: meshlabserver fails and our message, naming the file and the problem, is on stderr.
+TEST(MeshlabServer, BadInputGivesAClearErrorNamingTheFile) {
+    const std::vector<uint8_t> tank = readFileBytes(std::string(VOXELFAIR_EXAMPLE_DIR) + "/tank.vxl");
+    struct Case {
+        std::string name;
+        std::vector<uint8_t> bytes;
+        std::string expected;  // part of the message
+    };
+    const std::vector<Case> cases = {
+        {"truncated.vxl", std::vector<uint8_t>(tank.begin(), tank.begin() + long(tank.size() / 2)), "truncated.vxl"},
+        {"aceofspades.vxl", std::vector<uint8_t>(4096, 0x01), "Ace of Spades"},
+        {"empty.vxl", {}, "empty.vxl"},
+    };
+    for (const Case &c : cases) {
+        SCOPED_TRACE(c.name);
+        const std::string path = writeTempFile(c.name, c.bytes);
+        const std::string dir = fs::path(path).parent_path().string();
+        const MeshlabRun run = runMeshlabServer({"-i", path, "-o", dir + "/out.ply"});
+        EXPECT_NE(run.exitCode, 0) << run.output;
+        EXPECT_FALSE(fs::exists(dir + "/out.ply"));
+        EXPECT_NE(run.output.find("io_vxl: "), std::string::npos) << run.output;
+        EXPECT_NE(run.output.find(c.expected), std::string::npos) << run.output;
+        fs::remove_all(dir);
+    }
+}
+
+TEST(MeshlabServer, MissingOrBrokenCompanionFilesAreNamed) {
+    const std::string dir = makeTempDir();
+    fs::copy_file(std::string(VOXELFAIR_EXAMPLE_DIR) + "/tank.vxl", dir + "/tank.vxl");
+    std::ofstream(dir + "/tank.hva", std::ios::binary) << "not an hva";
+    MeshlabRun run = runMeshlabServer({"-i", dir + "/tank.vxl", "-o", dir + "/out.ply"});
+    EXPECT_NE(run.exitCode, 0);
+    EXPECT_NE(run.output.find(dir + "/tank.hva"), std::string::npos) << run.output;
+
+    fs::remove(dir + "/tank.hva");
+    run = runMeshlabServer({"-i", dir + "/tank.vxl", "-o", dir + "/out.ply"}, {{"VOXELFAIR_PALETTE", dir + "/none.pal"}});
+    EXPECT_NE(run.exitCode, 0);
+    EXPECT_NE(run.output.find(dir + "/none.pal"), std::string::npos) << run.output;
+    fs::remove_all(dir);
+}
+
+TEST(MeshlabServer, ListsOurFilters) {
+    const std::string dir = makeTempDir();
+    const MeshlabRun run = runMeshlabServer({"-d", dir + "/filters.html"});
+    std::ifstream in(dir + "/filters.html");
+    const std::string html(std::istreambuf_iterator<char>(in), {});
+    EXPECT_NE(html.find("Voxel"), std::string::npos) << run.output;
+    fs::remove_all(dir);
+}
