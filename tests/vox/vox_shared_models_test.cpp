@@ -1,0 +1,106 @@
+// Every real .vox file in the shared folder loads with the numbers an independent reading gave
+// (a throwaway Python parser of vox.md's layout, flattening the scene graph with integer
+// matrices): models, instances, voxels and the world bounds of all instance voxels.
+#include "formats/file_bytes.h"
+#include "formats/format_error.h"
+#include "formats/vox.h"
+#include "scene/vox_scene.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <glm/common.hpp>
+
+using namespace voxelfair;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct ModelFacts {
+    int sizeX, sizeY, sizeZ;
+    size_t voxels;
+};
+
+struct FileFacts {
+    const char *name;
+    std::vector<ModelFacts> models;
+    size_t instances;
+    size_t instanceVoxels;  // summed over instances
+    glm::vec3 lo, hi;       // world bounds of the instances' voxel cubes
+    std::vector<std::string> firstNames;
+};
+
+// clang-format off
+const std::vector<FileFacts> kFiles = {
+    {"8ontop", std::vector<ModelFacts>(8, {12, 14, 1, 168}), 72, 12096, {-213, -247, 7}, {239, 244, 87},
+     {"1", "2", "3", "4"}},
+    {"crabby", {{50, 50, 50, 0}, {10, 8, 7, 100}}, 2, 100, {-5, -4, 0}, {5, 4, 7}, {"Matrix", "crabby"}},
+    {"robo", {{7, 9, 7, 186}, {7, 6, 4, 63}, {22, 21, 23, 1042}}, 3, 1291, {-26, 5, 0}, {-4, 26, 30},
+     {"Head_Upper", "Head_Lower", "Head_Neck"}},
+    {"test-transform", {{128, 128, 128, 98304}, {39, 40, 40, 8262}, {40, 40, 30, 20240}}, 20, 621232,
+     {-129, -128, 0}, {127, 128, 50}, {"original", "clone", "top red", "front red"}},
+};
+// clang-format on
+
+fs::path voxFolder() { return fs::path(VOXELFAIR_MODELS_DIR) / "vox"; }
+
+std::vector<uint8_t> load(const std::string &name) { return readFileBytes((voxFolder() / (name + ".vox")).string()); }
+
+}  // namespace
+
+TEST(VoxSharedModels, LoadWithTheExpectedFacts) {
+    if (!fs::is_directory(voxFolder())) GTEST_SKIP() << "shared models folder missing: " << voxFolder();
+    for (const FileFacts &facts : kFiles) {
+        SCOPED_TRACE(facts.name);
+        const std::vector<uint8_t> bytes = load(facts.name);
+        const VoxFile file = readVox(bytes.data(), bytes.size());
+        EXPECT_EQ(file.version, 150);
+        EXPECT_FALSE(file.defaultPalette);
+        EXPECT_EQ(file.frameCount, 1);
+        ASSERT_EQ(file.models.size(), facts.models.size());
+        for (size_t m = 0; m < facts.models.size(); ++m) {
+            EXPECT_EQ(file.models[m].sizeX, facts.models[m].sizeX) << "model " << m;
+            EXPECT_EQ(file.models[m].sizeY, facts.models[m].sizeY) << "model " << m;
+            EXPECT_EQ(file.models[m].sizeZ, facts.models[m].sizeZ) << "model " << m;
+            EXPECT_EQ(file.models[m].voxelCount(), facts.models[m].voxels) << "model " << m;
+        }
+
+        const VoxelScene scene = voxScene(file);
+        ASSERT_EQ(scene.parts.size(), facts.instances);
+        for (size_t i = 0; i < facts.firstNames.size(); ++i) EXPECT_EQ(scene.parts[i].name, facts.firstNames[i]);
+        size_t voxels = 0;
+        glm::vec3 lo(INFINITY), hi(-INFINITY);
+        for (const PlacedVolume &part : scene.parts) {
+            const VoxelVolume &v = *part.volume;
+            voxels += v.voxelCount();
+            for (int y = 0; y < v.sizeY; ++y)
+                for (int x = 0; x < v.sizeX; ++x)
+                    for (uint32_t r = v.columnFirstRun[v.columnIndex(x, y)];
+                         r < v.columnFirstRun[v.columnIndex(x, y) + 1]; ++r)
+                        for (int z = v.runs[r].zBegin; z < v.runs[r].zEnd; ++z) {
+                            const glm::vec3 a(part.toModel * glm::vec4(x, y, z, 1));
+                            const glm::vec3 b(part.toModel * glm::vec4(x + 1, y + 1, z + 1, 1));
+                            lo = glm::min(lo, glm::min(a, b));
+                            hi = glm::max(hi, glm::max(a, b));
+                        }
+        }
+        EXPECT_EQ(voxels, facts.instanceVoxels);
+        EXPECT_EQ(lo, facts.lo);
+        EXPECT_EQ(hi, facts.hi);
+    }
+}
+
+TEST(VoxSharedModels, TeardownCompressedVoxelsAreRefused) {
+    if (!fs::is_directory(voxFolder())) GTEST_SKIP() << "shared models folder missing: " << voxFolder();
+    // teardown.vox stores its 8 models as TDCZ chunks instead of XYZI: no voxel data to read.
+    const std::vector<uint8_t> bytes = load("teardown");
+    try {
+        readVox(bytes.data(), bytes.size());
+        ADD_FAILURE() << "teardown.vox was accepted";
+    } catch (const FormatError &e) {
+        EXPECT_NE(std::string(e.what()).find("TDCZ"), std::string::npos) << e.what();
+    }
+}
