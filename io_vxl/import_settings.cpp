@@ -72,14 +72,23 @@ void declareImportParameters(RichParameterList &parameters, const QStringList &s
                                  "one unit per voxel, x and y horizontal, z up."));
 }
 
+void declareVoxImportParameters(RichParameterList &parameters, int frameCount) {
+    parameters.addParam(RichInt("frame", envInt("VOXELFAIR_FRAME", 0), "Animation frame",
+                                QString("The frame of the scene's animation to import, from 0%1. Hidden objects and "
+                                        "hidden layers are left out.")
+                                    .arg(frameCount > 1 ? QString(" to %1").arg(frameCount - 1) : QString())));
+}
+
 ImportSettings readImportSettings(const RichParameterList &parameters) {
     ImportSettings s;
-    s.paletteFile = parameters.getOpenFileName("paletteFile").trimmed();
-    const int house = parameters.getEnum("houseColour");
-    if (house > 0 && house < int(kHouseColours.size())) s.houseColour = kHouseColours[size_t(house)].rgb;
-    s.frame = parameters.getInt("frame");
-    s.section = parameters.getEnum("section") - 1;
-    s.applyTransforms = parameters.getBool("applyTransforms");
+    if (parameters.hasParameter("paletteFile")) s.paletteFile = parameters.getOpenFileName("paletteFile").trimmed();
+    if (parameters.hasParameter("houseColour")) {
+        const int house = parameters.getEnum("houseColour");
+        if (house > 0 && house < int(kHouseColours.size())) s.houseColour = kHouseColours[size_t(house)].rgb;
+    }
+    if (parameters.hasParameter("frame")) s.frame = parameters.getInt("frame");
+    if (parameters.hasParameter("section")) s.section = parameters.getEnum("section") - 1;
+    if (parameters.hasParameter("applyTransforms")) s.applyTransforms = parameters.getBool("applyTransforms");
     return s;
 }
 

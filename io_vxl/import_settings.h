@@ -4,7 +4,7 @@
 // environment variable; the batch scripts use them:
 //   VOXELFAIR_PALETTE         path of a .pal file (empty: embedded palette, else built-in)
 //   VOXELFAIR_HOUSE_COLOUR    one of the house colour names below, case-insensitive ("none" keeps the palette's)
-//   VOXELFAIR_FRAME           HVA animation frame, from 0
+//   VOXELFAIR_FRAME           animation frame (VXL: of the .hva; VOX: of the scene graph), from 0
 //   VOXELFAIR_SECTION         section number from 0, or -1 for all sections
 //   VOXELFAIR_TRANSFORMS      1 to place sections by their HVA/tailer matrices, 0 to leave them in voxel space
 #pragma once
@@ -27,10 +27,14 @@ struct ImportSettings {
     bool applyTransforms = true;
 };
 
-// Adds the parameters, with defaults from the environment. `sectionNames` fills the section
+// Adds the VXL parameters, with defaults from the environment. `sectionNames` fills the section
 // choice (the GUI shows "All sections", then "0: Body", ...).
 void declareImportParameters(RichParameterList &parameters, const QStringList &sectionNames);
 
+// Adds the VOX parameters (the animation frame; `frameCount` frames, when known, for the help text).
+void declareVoxImportParameters(RichParameterList &parameters, int frameCount);
+
+// Reads back whichever parameters were declared; the others keep their defaults.
 ImportSettings readImportSettings(const RichParameterList &parameters);
 
 }  // namespace voxelfair

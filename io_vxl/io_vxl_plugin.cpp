@@ -6,7 +6,9 @@
 #include "formats/file_bytes.h"
 #include "formats/format_error.h"
 #include "formats/hva.h"
+#include "formats/vox.h"
 #include "formats/vxl.h"
+#include "scene/vox_scene.h"
 #include "scene/vxl_scene.h"
 
 #include <QDir>
@@ -22,6 +24,8 @@ namespace {
 
 std::string local(const QString &s) { return s.toLocal8Bit().toStdString(); }
 
+bool isVox(const QString &format) { return format.compare("vox", Qt::CaseInsensitive) == 0; }
+
 // meshlabserver changes into the file's folder before calling open() but passes the path as the
 // user wrote it, so a relative path with folders no longer resolves: fall back to the bare name.
 QString resolveInputPath(const QString &fileName) {
@@ -31,21 +35,23 @@ QString resolveInputPath(const QString &fileName) {
     return fileName;
 }
 
+// The .hva beside a .vxl; game files come in any case (3TNK.VXL + 3tnk.hva).
 QString companionPath(const QString &vxlPath, const QString &extension) {
     const QFileInfo info(vxlPath);
-    const QDir dir = info.absoluteDir();
-    // Game files are named in any case (3TNK.VXL + 3tnk.hva): match the extension case-insensitively.
     for (const QString &candidate : {extension.toLower(), extension.toUpper()}) {
-        const QString path = dir.filePath(info.completeBaseName() + "." + candidate);
+        const QString path = info.absoluteDir().filePath(info.completeBaseName() + "." + candidate);
         if (QFileInfo::exists(path)) return path;
     }
     return QString();
 }
 
+std::vector<uint8_t> readBytes(const QString &path) { return readFileBytes(local(path)); }
+
 }  // namespace
 
 QList<MeshIOInterface::Format> IoVxlPlugin::importFormats() const {
-    return {Format("Westwood VXL voxel model (C&C Tiberian Sun, Red Alert 2)", tr("VXL"))};
+    return {Format("Westwood VXL voxel model (C&C Tiberian Sun, Red Alert 2)", tr("VXL")),
+            Format("MagicaVoxel VOX voxel model", tr("VOX"))};
 }
 
 QList<MeshIOInterface::Format> IoVxlPlugin::exportFormats() const { return {}; }
@@ -54,13 +60,24 @@ void IoVxlPlugin::GetExportMaskCapability(QString &, int &capability, int &defau
     capability = defaultBits = 0;
 }
 
-void IoVxlPlugin::initPreOpenParameter(const QString &, const QString &fileName, RichParameterList &parameters) {
-    // List the sections by name when the file can be read; a broken file is reported by open().
+void IoVxlPlugin::initPreOpenParameter(const QString &format, const QString &fileName, RichParameterList &parameters) {
+    // Read the file for the dialog's choices (sections, frames); a broken file is reported by open().
+    const QString path = resolveInputPath(fileName);
+    if (isVox(format)) {
+        int frames = 0;
+        try {
+            const std::vector<uint8_t> bytes = readBytes(path);
+            frames = readVox(bytes.data(), bytes.size()).frameCount;
+        } catch (...) {
+        }
+        declareVoxImportParameters(parameters, frames);
+        return;
+    }
     QStringList sectionNames;
     try {
-        const std::vector<uint8_t> bytes = readFileBytes(local(resolveInputPath(fileName)));
-        const VxlModel model = readVxl(bytes.data(), bytes.size());
-        for (const VxlSection &s : model.sections) sectionNames << QString::fromLatin1(s.name.c_str());
+        const std::vector<uint8_t> bytes = readBytes(path);
+        for (const VxlSection &s : readVxl(bytes.data(), bytes.size()).sections)
+            sectionNames << QString::fromLatin1(s.name.c_str());
     } catch (...) {
     }
     declareImportParameters(parameters, sectionNames);
@@ -79,81 +96,21 @@ bool IoVxlPlugin::fail(const QString &message) {
     return false;
 }
 
-bool IoVxlPlugin::open(const QString &, const QString &fileName, MeshModel &m, int &mask,
+bool IoVxlPlugin::open(const QString &format, const QString &fileName, MeshModel &m, int &mask,
                        const RichParameterList &parameters, vcg::CallBackPos *cb, QWidget *) {
     const QString path = resolveInputPath(fileName);
-    QString current = path;  // the file a FormatError is about
+    QString current = path;  // the file an error is about
+    // Nothing may escape into MeshLab: every failure becomes the importer's error.
     try {
         const ImportSettings settings = readImportSettings(parameters);
-        if (cb) cb(0, "Reading VXL");
-        const std::vector<uint8_t> bytes = readFileBytes(local(path));
-        const VxlModel model = readVxl(bytes.data(), bytes.size());
-
-        VxlSceneOptions options;
-        options.section = settings.section;
-        options.frame = settings.frame;
-        options.applyTransforms = settings.applyTransforms;
-        options.houseColour = settings.houseColour;
-
-        Palette external;
-        if (!settings.paletteFile.isEmpty()) {
-            current = settings.paletteFile;
-            const std::vector<uint8_t> palBytes = readFileBytes(local(current));
-            external = readPal(palBytes.data(), palBytes.size());
-            options.externalPalette = &external;
-        }
-
-        std::unique_ptr<HvaAnimation> hva;
-        const QString hvaPath = companionPath(path, "hva");
-        if (settings.applyTransforms && !hvaPath.isEmpty()) {
-            current = hvaPath;
-            const std::vector<uint8_t> hvaBytes = readFileBytes(local(current));
-            hva = std::make_unique<HvaAnimation>(readHva(hvaBytes.data(), hvaBytes.size()));
-        }
-        current = hva ? hvaPath : path;
-        const VoxelScene scene = vxlScene(model, hva.get(), options);
-        current = path;
-
-        size_t voxels = 0;
-        for (const PlacedVolume &part : scene.parts) voxels += part.volume->voxelCount();
-        if (voxels == 0)
-            return fail(QString("%1: no voxels to import (%2)")
-                            .arg(path, settings.section < 0 ? QString("every section is empty")
-                                                            : QString("section %1 is empty").arg(settings.section)));
-
-        if (cb) cb(30, "Extracting the voxel surface");
-        const SceneSurface surface = extractSceneSurface(scene);
-        if (cb) cb(80, "Building the mesh");
-        mask |= sceneImportMask();
-        m.Enable(mask);
-        sceneToMeshLab(surface, m);
-
-        const PaletteChoice palette = chooseVxlPalette(model, options);
-        const QString placement = !settings.applyTransforms ? QString("voxel space")
-                                  : hva ? QString("HVA frame %1").arg(settings.frame)
-                                        : QString("section matrices (no .hva found)");
-        report(QString("%1: %2 of %3 sections, %4 voxels -> %5 quads, %6 vertices; palette: %7%8; placement: %9")
-                   .arg(QFileInfo(path).fileName())
-                   .arg(scene.parts.size())
-                   .arg(model.sections.size())
-                   .arg(voxels)
-                   .arg(surface.quadCount())
-                   .arg(surface.positions.size())
-                   .arg(settings.paletteFile.isEmpty() ? QString::fromStdString(palette.source) : settings.paletteFile)
-                   .arg(settings.houseColour ? ", house colour remapped" : "")
-                   .arg(placement));
-        report(QString("manifold surface: %1 non-manifold edges and %2 non-manifold vertices split; "
-                       "%3 enclosed cavity voxels filled")
-                   .arg(surface.stats.nonManifoldEdgesSplit)
-                   .arg(surface.stats.nonManifoldVerticesSplit)
-                   .arg(surface.stats.cavityVoxelsFilled));
-        size_t clamped = 0;
-        for (const VxlSection &s : model.sections) clamped += s.clampedNormals;
-        if (clamped > 0) report(QString("%1 voxel normal indices were past the normal table and were clamped").arg(clamped));
+        if (isVox(format))
+            openVox(path, settings, m, mask, cb);
+        else
+            openVxl(path, settings, m, mask, cb, current);
         if (cb) cb(100, "Done");
         return true;
     } catch (const FormatError &e) {
-        // Readers' messages say what and where; the file's name comes first.
+        // Readers say what and where; the file's name comes first.
         const QString what = QString::fromLocal8Bit(e.what());
         return fail(what.startsWith(current) ? what : current + ": " + what);
     } catch (const std::bad_alloc &) {
@@ -165,9 +122,98 @@ bool IoVxlPlugin::open(const QString &, const QString &fileName, MeshModel &m, i
     }
 }
 
+void IoVxlPlugin::openVxl(const QString &path, const ImportSettings &settings, MeshModel &m, int &mask,
+                          vcg::CallBackPos *cb, QString &current) {
+    if (cb) cb(0, "Reading VXL");
+    const std::vector<uint8_t> bytes = readBytes(path);
+    const VxlModel model = readVxl(bytes.data(), bytes.size());
+
+    VxlSceneOptions options;
+    options.section = settings.section;
+    options.frame = settings.frame;
+    options.applyTransforms = settings.applyTransforms;
+    options.houseColour = settings.houseColour;
+    Palette external;
+    if (!settings.paletteFile.isEmpty()) {
+        current = settings.paletteFile;
+        const std::vector<uint8_t> palBytes = readBytes(current);
+        external = readPal(palBytes.data(), palBytes.size());
+        options.externalPalette = &external;
+    }
+    std::unique_ptr<HvaAnimation> hva;
+    const QString hvaPath = companionPath(path, "hva");
+    if (settings.applyTransforms && !hvaPath.isEmpty()) {
+        current = hvaPath;
+        const std::vector<uint8_t> hvaBytes = readBytes(current);
+        hva = std::make_unique<HvaAnimation>(readHva(hvaBytes.data(), hvaBytes.size()));
+    }
+    // A wrong frame or section count is a mismatch of the .hva (when there is one) with the .vxl.
+    current = hva ? hvaPath : path;
+    const VoxelScene scene = vxlScene(model, hva.get(), options);
+    current = path;
+
+    const SceneSurface surface = meshScene(path, scene, m, mask, cb);
+    const QString placement = !settings.applyTransforms ? QString("voxel space")
+                              : hva                     ? QString("HVA frame %1").arg(settings.frame)
+                                                        : QString("section matrices (no .hva found)");
+    report(QString("%1: %2 of %3 sections imported; palette: %4%5; placement: %6")
+               .arg(QFileInfo(path).fileName())
+               .arg(scene.parts.size())
+               .arg(model.sections.size())
+               .arg(settings.paletteFile.isEmpty() ? QString::fromStdString(chooseVxlPalette(model, options).source)
+                                                   : settings.paletteFile)
+               .arg(settings.houseColour ? ", house colour remapped" : "")
+               .arg(placement));
+    size_t clamped = 0;
+    for (const VxlSection &s : model.sections) clamped += s.clampedNormals;
+    if (clamped > 0) report(QString("%1 voxel normal indices were past the normal table and were clamped").arg(clamped));
+}
+
+void IoVxlPlugin::openVox(const QString &path, const ImportSettings &settings, MeshModel &m, int &mask,
+                          vcg::CallBackPos *cb) {
+    if (cb) cb(0, "Reading VOX");
+    const std::vector<uint8_t> bytes = readBytes(path);
+    const VoxFile file = readVox(bytes.data(), bytes.size());
+    const VoxelScene scene = voxScene(file, VoxSceneOptions{settings.frame});
+    meshScene(path, scene, m, mask, cb);
+    report(QString("%1: MagicaVoxel version %2, %3 models, %4 instances shown at frame %5 of %6; palette: %7")
+               .arg(QFileInfo(path).fileName())
+               .arg(file.version)
+               .arg(file.models.size())
+               .arg(scene.parts.size())
+               .arg(settings.frame)
+               .arg(file.frameCount)
+               .arg(file.defaultPalette ? "MagicaVoxel's default (the file has none)" : "the file's"));
+}
+
+SceneSurface IoVxlPlugin::meshScene(const QString &path, const VoxelScene &scene, MeshModel &m, int &mask,
+                                    vcg::CallBackPos *cb) {
+    size_t voxels = 0;
+    for (const PlacedVolume &part : scene.parts) voxels += part.volume->voxelCount();
+    if (voxels == 0) throw FormatError("there are no voxels to import (every chosen part is empty)");
+
+    if (cb) cb(30, "Extracting the voxel surface");
+    SceneSurface surface = extractSceneSurface(scene);
+    if (cb) cb(80, "Building the mesh");
+    mask |= sceneImportMask();
+    m.Enable(mask);
+    sceneToMeshLab(surface, m);
+    report(QString("%1: %2 parts, %3 voxels -> %4 quads, %5 vertices; manifold surface: %6 non-manifold edges and "
+                   "%7 non-manifold vertices split, %8 enclosed cavity voxels filled")
+               .arg(QFileInfo(path).fileName())
+               .arg(scene.parts.size())
+               .arg(voxels)
+               .arg(surface.quadCount())
+               .arg(surface.positions.size())
+               .arg(surface.stats.nonManifoldEdgesSplit)
+               .arg(surface.stats.nonManifoldVerticesSplit)
+               .arg(surface.stats.cavityVoxelsFilled));
+    return surface;
+}
+
 bool IoVxlPlugin::save(const QString &, const QString &, MeshModel &, const int, const RichParameterList &,
                        vcg::CallBackPos *, QWidget *) {
-    errorMessage = "VXL export is not supported";
+    errorMessage = "voxel export is not supported";
     return false;
 }
 

@@ -1,9 +1,16 @@
-// MeshLab importer for Westwood VXL voxel models (Tiberian Sun, Red Alert 2).
+// MeshLab importer for voxel models: Westwood VXL (Tiberian Sun, Red Alert 2; with .hva and
+// .pal) and MagicaVoxel VOX. Both become the same manifold quad surface (scene_to_meshlab.h).
 #pragma once
 
 #include <common/interfaces.h>
 
 #include <QObject>
+
+namespace voxelfair {
+struct ImportSettings;
+struct SceneSurface;
+struct VoxelScene;
+}  // namespace voxelfair
 
 class IoVxlPlugin : public QObject, public MeshIOInterface {
     Q_OBJECT
@@ -22,6 +29,16 @@ public:
               const RichParameterList &parameters, vcg::CallBackPos *cb, QWidget *parent) override;
 
 private:
+    // Each reads its format into a scene and meshes it into `m`; errors are thrown as
+    // voxelfair::FormatError with `current` naming the file they are about.
+    void openVxl(const QString &path, const voxelfair::ImportSettings &settings, MeshModel &m, int &mask,
+                 vcg::CallBackPos *cb, QString &current);
+    void openVox(const QString &path, const voxelfair::ImportSettings &settings, MeshModel &m, int &mask,
+                 vcg::CallBackPos *cb);
+    // Extracts the scene's surface into `m` and reports it; throws when there is nothing to mesh.
+    voxelfair::SceneSurface meshScene(const QString &path, const voxelfair::VoxelScene &scene, MeshModel &m, int &mask,
+                                      vcg::CallBackPos *cb);
+
     // Writes an information line to MeshLab's log and to stderr (meshlabserver's importer has no log).
     void report(const QString &message);
     // Sets errorMessage, logs it and writes it to stderr (meshlabserver shows neither).

@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
-"""Convert voxel models (.vxl) to meshes with headless MeshLab (meshlabserver).
+"""Convert voxel models (.vxl, .vox) to meshes with headless MeshLab (meshlabserver).
 
 usage: voxelfair_convert.py INPUT [INPUT ...] --output FOLDER [options]
 
-INPUT is a model file or a folder (searched for *.vxl). Each model is imported by voxelfair's
+INPUT is a model file or a folder (searched for *.vxl and *.vox). Each model is imported by voxelfair's
 io_vxl plugin inside meshlabserver, optionally run through a .mlx filter script, and saved as
 FOLDER/<name>.ply (and/or .obj). Files run in parallel on the available cores.
 
@@ -21,7 +21,7 @@ import tempfile
 import time
 from pathlib import Path
 
-MODEL_SUFFIXES = (".vxl",)
+MODEL_SUFFIXES = (".vxl", ".vox")
 # meshlabserver -m flags: face colour and face quality (the VXL section of each face).
 DEFAULT_SAVE_FLAGS = ["fc", "fq"]
 
@@ -51,7 +51,7 @@ def collect_inputs(paths):
         else:
             sys.exit(f"voxelfair: {p}: no such file or folder")
     if not models:
-        sys.exit("voxelfair: no .vxl models found in " + ", ".join(paths))
+        sys.exit("voxelfair: no .vxl or .vox models found in " + ", ".join(paths))
     return [m.resolve() for m in models]
 
 

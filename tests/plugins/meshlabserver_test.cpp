@@ -5,8 +5,10 @@
 #include "ply_reader.h"
 
 #include "formats/file_bytes.h"
+#include "formats/vox.h"
 #include "formats/hva.h"
 #include "formats/vxl.h"
+#include "scene/vox_scene.h"
 #include "scene/vxl_scene.h"
 
 #include <gtest/gtest.h>
@@ -82,6 +84,14 @@ void expectSameSurface(const PlyMesh &ply, const SceneSurface &expected) {
 
 bool haveModels() { return fs::is_directory(kModels); }
 
+const std::string kVoxModels = std::string(VOXELFAIR_MODELS_DIR) + "/vox";
+
+SceneSurface expectedVoxSurface(const std::string &voxPath, int frame = 0) {
+    const std::vector<uint8_t> bytes = readFileBytes(voxPath);
+    const VoxFile file = readVox(bytes.data(), bytes.size());
+    return extractSceneSurface(voxScene(file, VoxSceneOptions{frame}));
+}
+
 std::string writeTempFile(const std::string &name, const std::vector<uint8_t> &bytes) {
     const std::string path = makeTempDir() + "/" + name;
     std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char *>(bytes.data()), std::streamsize(bytes.size()));
@@ -99,7 +109,7 @@ TEST(MeshlabServer, ImportsTheExampleTankWithColoursAndSections) {
     expectSameSurface(ply, expected);
     // Three sections, each face tagged with its own.
     EXPECT_EQ(expected.partQuadCounts.size(), 3u);
-    EXPECT_NE(log.find("3 of 3 sections"), std::string::npos) << log;
+    EXPECT_NE(log.find("3 of 3 sections imported"), std::string::npos) << log;
     EXPECT_NE(log.find("non-manifold edges"), std::string::npos) << log;
 }
 
@@ -172,5 +182,31 @@ TEST(MeshlabServer, ListsOurFilters) {
     std::ifstream in(dir + "/filters.html");
     const std::string html(std::istreambuf_iterator<char>(in), {});
     EXPECT_NE(html.find("Voxel"), std::string::npos) << run.output;
+    fs::remove_all(dir);
+}
+
+TEST(MeshlabServer, ImportsSharedVoxFilesLikeTheHostFreeReader) {
+    if (!fs::is_directory(kVoxModels)) GTEST_SKIP() << "the shared models are absent: " << kVoxModels;
+    for (const char *name : {"robo", "crabby", "8ontop", "test-transform"}) {
+        SCOPED_TRACE(name);
+        const std::string vox = kVoxModels + "/" + name + ".vox";
+        std::string log;
+        const PlyMesh ply = importWithMeshLab(vox, {}, &log);
+        const SceneSurface expected = expectedVoxSurface(vox);
+        ASSERT_GT(expected.quadCount(), 0u);
+        expectSameSurface(ply, expected);
+        EXPECT_NE(log.find("instances shown at frame 0"), std::string::npos) << log;
+    }
+}
+
+TEST(MeshlabServer, UnsupportedVoxChunksAreNamed) {
+    if (!fs::is_directory(kVoxModels)) GTEST_SKIP() << "the shared models are absent: " << kVoxModels;
+    const std::string dir = makeTempDir();
+    const MeshlabRun run = runMeshlabServer({"-i", kVoxModels + "/teardown.vox", "-o", dir + "/out.ply"});
+    EXPECT_NE(run.exitCode, 0);
+    EXPECT_FALSE(fs::exists(dir + "/out.ply"));
+    const std::string file = fs::canonical(kVoxModels + "/teardown.vox").string();
+    EXPECT_NE(run.output.find("io_vxl: " + file + ": "), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("TDCZ"), std::string::npos) << run.output;
     fs::remove_all(dir);
 }
