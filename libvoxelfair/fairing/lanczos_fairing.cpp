@@ -1,0 +1,108 @@
+#include "fairing/lanczos_fairing.h"
+
+#include "fairing/lanczos_kernel.h"
+#include "fairing/voxel_size.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+namespace voxelfair {
+
+FairingPassStats lanczosFairingPass(const glm::vec3 *in, glm::vec3 *out, const CsrAdjacency &neighbours,
+                                    const uint8_t *vertexSelected, float lambda, float voxelSize) {
+    constexpr float kMaxLength2 = std::numeric_limits<float>::max();
+    constexpr float kCountedMove2 = 1e-12f;  // (1e-6 voxel)^2
+    FairingPassStats stats;
+    float maxMove2 = 0.0f;
+    const size_t vertexCount = neighbours.rowCount();
+    for (size_t v = 0; v < vertexCount; ++v) {
+        const glm::vec3 p = in[v];
+        out[v] = p;
+        if (vertexSelected && !vertexSelected[v])
+            continue;
+        // Eq. 8: mean of unit vectors. One test rejects coincident and non-finite neighbours
+        // (NaN fails every comparison); a non-finite v rejects all of them and stays put.
+        glm::vec3 sum(0.0f);
+        uint32_t count = 0;
+        for (const uint32_t *n = neighbours.begin(v), *end = neighbours.end(v); n != end; ++n) {
+            const glm::vec3 e = in[*n] - p;
+            const float length2 = glm::dot(e, e);
+            if (!(length2 > 0.0f && length2 <= kMaxLength2))
+                continue;
+            sum += e * (1.0f / std::sqrt(length2));
+            ++count;
+        }
+        if (count == 0)
+            continue;
+        const glm::vec3 d = sum * (lambda / float(count));
+        // Eqs. 9-10, per axis, in voxels.
+        const glm::vec3 move = voxelSize * glm::vec3(lanczosDisplacement(d.x), lanczosDisplacement(d.y),
+                                                     lanczosDisplacement(d.z));
+        const float move2 = glm::dot(move, move);
+        out[v] = p + move;
+        maxMove2 = std::max(maxMove2, move2);
+        // On flat regions the unit vectors cancel only up to float rounding (d ~ 1e-8, a move of
+        // ~1e-16 voxel): count as moved only what moves by more than a millionth of a voxel.
+        if (move2 > kCountedMove2 * voxelSize * voxelSize)
+            ++stats.movedVertices;
+    }
+    stats.maxDisplacement = std::sqrt(maxMove2);
+    return stats;
+}
+
+FairingReport fairModifiedLanczos(glm::vec3 *positions, size_t vertexCount, const uint32_t *polygonOffsets,
+                                  const uint32_t *polygonIndices, size_t polygonCount,
+                                  const uint8_t *vertexSelected, const LanczosFairingOptions &options) {
+    FairingReport report;
+    auto finish = [&](FairingStatus status, const char *message) {
+        report.status = status;
+        report.message = message;
+        return report;
+    };
+    if (!std::isfinite(options.lambda) || options.passes < 0 || !std::isfinite(options.voxelSize) ||
+        options.voxelSize < 0.0f)
+        return finish(FairingStatus::InvalidOptions, "lambda and voxelSize must be finite, voxelSize and passes >= 0");
+    if (PolygonMeshError e = validatePolygons(vertexCount, polygonOffsets, polygonIndices, polygonCount);
+        e != PolygonMeshError::None)
+        return finish(FairingStatus::InvalidMesh, describe(e));
+    if (!positions && vertexCount > 0)
+        return finish(FairingStatus::InvalidMesh, "positions missing (null)");
+    if (vertexCount == 0 || polygonCount == 0)
+        return finish(FairingStatus::NothingToDo, "no vertex or no polygon");
+    if (options.passes == 0)
+        return finish(FairingStatus::NothingToDo, "zero passes requested");
+
+    for (size_t v = 0; v < vertexCount; ++v)
+        if (!std::isfinite(positions[v].x) || !std::isfinite(positions[v].y) || !std::isfinite(positions[v].z))
+            ++report.skippedVertices;
+
+    report.voxelSize = options.voxelSize > 0.0f
+                           ? options.voxelSize
+                           : detectVoxelSize(positions, vertexCount, polygonOffsets, polygonIndices, polygonCount);
+    if (!(report.voxelSize > 0.0f))
+        return finish(FairingStatus::NothingToDo, "no polygon edge of non-zero finite length to take the voxel size from");
+
+    CsrAdjacency neighbours;
+    if (PolygonMeshError e = buildVertexNeighbours(vertexCount, polygonOffsets, polygonIndices, polygonCount, neighbours);
+        e != PolygonMeshError::None)
+        return finish(FairingStatus::InvalidMesh, describe(e));
+
+    // Jacobi: every vertex of a pass reads the positions from before that pass.
+    std::vector<glm::vec3> previous(positions, positions + vertexCount);
+    for (int pass = 0; pass < options.passes; ++pass) {
+        if (pass > 0)
+            std::copy(positions, positions + vertexCount, previous.begin());
+        const FairingPassStats stats = lanczosFairingPass(previous.data(), positions, neighbours, vertexSelected,
+                                                          options.lambda, report.voxelSize);
+        report.movedVertices = stats.movedVertices;
+        report.maxDisplacement = std::max(report.maxDisplacement, stats.maxDisplacement);
+        ++report.passes;
+    }
+    return finish(FairingStatus::Ok, "ok");
+}
+
+}  // namespace voxelfair

@@ -1,0 +1,162 @@
+#include "fairing/polygon_adjacency.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace voxelfair {
+
+namespace {
+
+constexpr size_t kMaxIndex = std::numeric_limits<uint32_t>::max();
+
+// Closes the gaps left by rows that kept fewer items than were reserved for them.
+// `rowEnd[v]` is where row v's kept items end inside its reserved range.
+void compactRows(CsrAdjacency &csr, const std::vector<uint32_t> &rowEnd) {
+    uint32_t write = 0;
+    const size_t rows = csr.rowCount();
+    for (size_t v = 0; v < rows; ++v) {
+        const uint32_t first = csr.offsets[v];
+        csr.offsets[v] = write;
+        for (uint32_t i = first; i < rowEnd[v]; ++i)
+            csr.items[write++] = csr.items[i];
+    }
+    csr.offsets[rows] = write;
+    csr.items.resize(write);
+    csr.items.shrink_to_fit();
+}
+
+// Turns per-row counts (stored in offsets[1..]) into start offsets; fails past 32 bits.
+bool prefixSum(std::vector<uint32_t> &offsets, const std::vector<uint64_t> &counts) {
+    uint64_t total = 0;
+    offsets[0] = 0;
+    for (size_t v = 0; v < counts.size(); ++v) {
+        total += counts[v];
+        if (total > kMaxIndex)
+            return false;
+        offsets[v + 1] = uint32_t(total);
+    }
+    return true;
+}
+
+}  // namespace
+
+const char *describe(PolygonMeshError error) {
+    switch (error) {
+    case PolygonMeshError::None: return "ok";
+    case PolygonMeshError::TooManyVertices: return "too many vertices or adjacencies for 32-bit indices";
+    case PolygonMeshError::BadOffsets: return "polygon offsets must start at 0 and never decrease";
+    case PolygonMeshError::IndexOutOfRange: return "a polygon uses a vertex index out of range";
+    case PolygonMeshError::MissingArray: return "polygon offsets or indices missing (null)";
+    }
+    return "unknown error";
+}
+
+PolygonMeshError validatePolygons(size_t vertexCount, const uint32_t *polygonOffsets,
+                                  const uint32_t *polygonIndices, size_t polygonCount) {
+    if (vertexCount > kMaxIndex)
+        return PolygonMeshError::TooManyVertices;
+    if (polygonCount == 0)
+        return PolygonMeshError::None;
+    if (!polygonOffsets)
+        return PolygonMeshError::MissingArray;
+    if (polygonOffsets[0] != 0)
+        return PolygonMeshError::BadOffsets;
+    for (size_t p = 0; p < polygonCount; ++p)
+        if (polygonOffsets[p + 1] < polygonOffsets[p])
+            return PolygonMeshError::BadOffsets;
+    const uint32_t indexCount = polygonOffsets[polygonCount];
+    if (indexCount > 0 && !polygonIndices)
+        return PolygonMeshError::MissingArray;
+    for (uint32_t i = 0; i < indexCount; ++i)
+        if (polygonIndices[i] >= vertexCount)
+            return PolygonMeshError::IndexOutOfRange;
+    return PolygonMeshError::None;
+}
+
+PolygonMeshError buildVertexNeighbours(size_t vertexCount, const uint32_t *polygonOffsets,
+                                       const uint32_t *polygonIndices, size_t polygonCount,
+                                       CsrAdjacency &out) {
+    out = {};
+    if (PolygonMeshError e = validatePolygons(vertexCount, polygonOffsets, polygonIndices, polygonCount);
+        e != PolygonMeshError::None)
+        return e;
+
+    // Reserve (arity - 1) slots per incidence, fill all pairs, then sort and dedupe each row:
+    // cheaper than a set per vertex, and rows are short (about 12 before dedupe on quads).
+    std::vector<uint64_t> counts(vertexCount, 0);
+    for (size_t p = 0; p < polygonCount; ++p) {
+        const uint32_t first = polygonOffsets[p], last = polygonOffsets[p + 1];
+        if (last - first < 2)
+            continue;
+        for (uint32_t i = first; i < last; ++i)
+            counts[polygonIndices[i]] += last - first - 1;
+    }
+    out.offsets.assign(vertexCount + 1, 0);
+    if (!prefixSum(out.offsets, counts)) {
+        out = {};
+        return PolygonMeshError::TooManyVertices;
+    }
+    out.items.resize(out.offsets[vertexCount]);
+
+    std::vector<uint32_t> cursor(out.offsets.begin(), out.offsets.end() - 1);
+    for (size_t p = 0; p < polygonCount; ++p) {
+        const uint32_t first = polygonOffsets[p], last = polygonOffsets[p + 1];
+        if (last - first < 2)
+            continue;
+        for (uint32_t i = first; i < last; ++i) {
+            const uint32_t v = polygonIndices[i];
+            for (uint32_t j = first; j < last; ++j)
+                if (j != i)
+                    out.items[cursor[v]++] = polygonIndices[j];
+        }
+    }
+
+    for (size_t v = 0; v < vertexCount; ++v) {
+        uint32_t *row = out.items.data() + out.offsets[v];
+        uint32_t *rowEnd = out.items.data() + cursor[v];
+        std::sort(row, rowEnd);
+        rowEnd = std::unique(row, rowEnd);
+        rowEnd = std::remove(row, rowEnd, uint32_t(v));  // a polygon repeating v
+        cursor[v] = uint32_t(rowEnd - out.items.data());
+    }
+    compactRows(out, cursor);
+    return PolygonMeshError::None;
+}
+
+PolygonMeshError buildVertexPolygons(size_t vertexCount, const uint32_t *polygonOffsets,
+                                     const uint32_t *polygonIndices, size_t polygonCount,
+                                     CsrAdjacency &out) {
+    out = {};
+    if (PolygonMeshError e = validatePolygons(vertexCount, polygonOffsets, polygonIndices, polygonCount);
+        e != PolygonMeshError::None)
+        return e;
+    if (polygonCount > kMaxIndex)
+        return PolygonMeshError::TooManyVertices;
+
+    std::vector<uint64_t> counts(vertexCount, 0);
+    const uint32_t indexCount = polygonCount ? polygonOffsets[polygonCount] : 0;
+    for (uint32_t i = 0; i < indexCount; ++i)
+        ++counts[polygonIndices[i]];
+    out.offsets.assign(vertexCount + 1, 0);
+    prefixSum(out.offsets, counts);  // at most indexCount, which fits
+    out.items.resize(indexCount);
+
+    // Polygons are visited in order, so a polygon repeating v would be the row's last item.
+    std::vector<uint32_t> cursor(out.offsets.begin(), out.offsets.end() - 1);
+    bool repeated = false;
+    for (size_t p = 0; p < polygonCount; ++p) {
+        for (uint32_t i = polygonOffsets[p]; i < polygonOffsets[p + 1]; ++i) {
+            const uint32_t v = polygonIndices[i];
+            if (cursor[v] > out.offsets[v] && out.items[cursor[v] - 1] == p) {
+                repeated = true;
+                continue;
+            }
+            out.items[cursor[v]++] = uint32_t(p);
+        }
+    }
+    if (repeated)
+        compactRows(out, cursor);
+    return PolygonMeshError::None;
+}
+
+}  // namespace voxelfair

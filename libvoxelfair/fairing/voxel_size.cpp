@@ -1,0 +1,60 @@
+#include "fairing/voxel_size.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+namespace voxelfair {
+
+float detectVoxelSize(const glm::vec3 *positions, size_t vertexCount, const uint32_t *polygonOffsets,
+                      const uint32_t *polygonIndices, size_t polygonCount) {
+    constexpr size_t kMaxEdges = size_t(1) << 16;
+    if (!positions || !polygonOffsets || !polygonIndices || polygonCount == 0)
+        return 0.0f;
+    const size_t indexCount = polygonOffsets[polygonCount];
+    const size_t stride = std::max<size_t>(1, indexCount / kMaxEdges);  // ~one edge per index
+
+    // (bin, length): bin = round(log(length) / log(1 + 1e-3)), i.e. 1e-3 relative bins.
+    const double binsPerLog = 1.0 / std::log1p(1e-3);
+    std::vector<std::pair<long, float>> lengths;
+    lengths.reserve(std::min(indexCount, 2 * kMaxEdges));
+    for (size_t p = 0; p < polygonCount; p += stride) {
+        const uint32_t first = polygonOffsets[p], last = polygonOffsets[p + 1];
+        if (last <= first + 1 || last > indexCount)
+            continue;
+        for (uint32_t i = first; i < last; ++i) {
+            const uint32_t a = polygonIndices[i];
+            const uint32_t b = polygonIndices[i + 1 < last ? i + 1 : first];
+            if (a >= vertexCount || b >= vertexCount)
+                continue;
+            const float length = glm::length(positions[b] - positions[a]);
+            if (!(length > 0.0f) || !std::isfinite(length))
+                continue;
+            lengths.emplace_back(std::lround(std::log(double(length)) * binsPerLog), length);
+        }
+    }
+    if (lengths.empty())
+        return 0.0f;
+
+    std::sort(lengths.begin(), lengths.end());
+    size_t bestFirst = 0, bestCount = 0;
+    for (size_t first = 0; first < lengths.size();) {
+        size_t last = first;
+        while (last < lengths.size() && lengths[last].first == lengths[first].first)
+            ++last;
+        if (last - first > bestCount) {
+            bestFirst = first;
+            bestCount = last - first;
+        }
+        first = last;
+    }
+    double sum = 0.0;
+    for (size_t i = bestFirst; i < bestFirst + bestCount; ++i)
+        sum += lengths[i].second;
+    return float(sum / double(bestCount));
+}
+
+}  // namespace voxelfair

@@ -1,0 +1,21 @@
+// The voxel size of a voxel-derived polygon mesh, so the fairing (which works in voxel units)
+// smooths a scaled model exactly as the unscaled one.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include <glm/vec3.hpp>
+
+namespace voxelfair {
+
+// The dominant polygon edge length: lengths are binned at 1e-3 relative width and the mean of
+// the most populated bin is returned (ties: the shorter bin). On a voxel surface every edge is
+// one voxel, so this is exact; after smoothing or scaling it stays the typical edge. Polygon
+// edges are the consecutive vertex pairs (not the quad diagonals). Only every k-th polygon is
+// measured, k chosen for about 65536 edges, so the cost stays bounded on big meshes. Edges of
+// zero or non-finite length and indices out of range are ignored; returns 0 when no edge is left.
+float detectVoxelSize(const glm::vec3 *positions, size_t vertexCount, const uint32_t *polygonOffsets,
+                      const uint32_t *polygonIndices, size_t polygonCount);
+
+}  // namespace voxelfair
