@@ -1,5 +1,5 @@
 // MeshLab filters of voxelfair. A thin dispatcher: each filter converts CMeshO to the arrays of
-// a host-free unit in libvoxelfair/, runs it, and writes the result back.
+// a host-free unit in libvoxelfair/ (meshlab_arrays.h), runs it, and writes the result back.
 #pragma once
 
 #include <common/interfaces.h>
@@ -12,7 +12,10 @@ class FilterVoxelfairPlugin : public QObject, public MeshFilterInterface {
     Q_INTERFACES(MeshFilterInterface)
 
 public:
-    enum FilterId { FP_VOXEL_INFO };
+    enum FilterId {
+        FP_LANCZOS_FAIRING,    // section 4.3
+        FP_ATTRIBUTE_SMOOTHING  // section 4.4
+    };
 
     FilterVoxelfairPlugin();
 
@@ -29,6 +32,11 @@ public:
                      vcg::CallBackPos *cb) override;
 
 private:
-    // Sets errorMessage and logs it (meshlabserver never prints errorMessage).
+    bool applyLanczosFairing(MeshModel &m, const RichParameterList &parameters, vcg::CallBackPos *cb);
+    bool applyAttributeSmoothing(MeshModel &m, const RichParameterList &parameters, vcg::CallBackPos *cb);
+
+    // Sets errorMessage, logs it and writes it to stderr (meshlabserver never prints errorMessage).
     bool fail(const QString &message);
+    // An information line for MeshLab's log, echoed to stderr for headless runs.
+    void report(const QString &message);
 };

@@ -4,6 +4,8 @@
 #include "meshlab_run.h"
 #include "ply_reader.h"
 
+#include "attributes/vertex_colours.h"
+#include "fairing/lanczos_fairing.h"
 #include "formats/file_bytes.h"
 #include "formats/vox.h"
 #include "formats/hva.h"
@@ -208,5 +210,91 @@ TEST(MeshlabServer, UnsupportedVoxChunksAreNamed) {
     const std::string file = fs::canonical(kVoxModels + "/teardown.vox").string();
     EXPECT_NE(run.output.find("io_vxl: " + file + ": "), std::string::npos) << run.output;
     EXPECT_NE(run.output.find("TDCZ"), std::string::npos) << run.output;
+    fs::remove_all(dir);
+}
+
+namespace {
+
+std::string writeScript(const std::string &dir, const std::string &filters) {
+    const std::string path = dir + "/script.mlx";
+    std::ofstream(path) << "<!DOCTYPE FilterScript>\n<FilterScript>\n" << filters << "</FilterScript>\n";
+    return path;
+}
+
+const char *kFairingFilter = R"(<filter name="Voxel Fairing: Modified Lanczos">
+ <Param type="RichFloat" name="lambda" value="1.33333337"/>
+ <Param type="RichInt" name="passes" value="1"/>
+ <Param type="RichFloat" name="voxelSize" value="0"/>
+ <Param type="RichBool" name="Selected" value="false"/>
+</filter>
+)";
+
+const char *kAttributeFilter = R"(<filter name="Voxel Fairing: Attribute Smoothing">
+ <Param type="RichBool" name="distinctNormals" value="true"/>
+ <Param type="RichBool" name="triangulate" value="true"/>
+</filter>
+)";
+
+}  // namespace
+
+// The MeshLab filter gives the host-free unit's result, vertex for vertex.
+TEST(MeshlabServer, FairingFilterMatchesTheHostFreeUnit) {
+    const std::string tank = std::string(VOXELFAIR_EXAMPLE_DIR) + "/tank.vxl";
+    SceneSurface expected = expectedSurface(tank);
+    std::vector<uint32_t> offsets(expected.quadCount() + 1);
+    for (size_t q = 0; q < offsets.size(); ++q) offsets[q] = uint32_t(4 * q);
+    const FairingReport report = fairModifiedLanczos(expected.positions.data(), expected.positions.size(), offsets.data(),
+                                                     expected.quads.data(), expected.quadCount(), nullptr);
+    ASSERT_EQ(report.status, FairingStatus::Ok);
+    ASSERT_GT(report.movedVertices, expected.positions.size() / 4);
+
+    const std::string dir = makeTempDir();
+    const MeshlabRun run = runMeshlabServer({"-i", tank, "-o", dir + "/out.ply", "-m", "fc", "fq", "sa", "-s",
+                                             writeScript(dir, kFairingFilter)});
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find("Voxel Fairing: 1 pass(es)"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find(std::to_string(report.movedVertices) + " vertices moved"), std::string::npos)
+        << run.output;
+    expectSameSurface(readAsciiPly(dir + "/out.ply"), expected);
+    fs::remove_all(dir);
+}
+
+// Attribute smoothing after fairing: triangles only, unit vertex normals, vertex colours equal to
+// the mean of the adjacent quads' colours.
+TEST(MeshlabServer, AttributeSmoothingGivesVertexColoursAndNormals) {
+    const std::string tank = std::string(VOXELFAIR_EXAMPLE_DIR) + "/tank.vxl";
+    const SceneSurface expected = expectedSurface(tank);
+    std::vector<uint32_t> offsets(expected.quadCount() + 1);
+    for (size_t q = 0; q < offsets.size(); ++q) offsets[q] = uint32_t(4 * q);
+    std::vector<glm::vec4> quadColours(expected.quadCount()), vertexColours(expected.positions.size());
+    for (size_t q = 0; q < quadColours.size(); ++q)
+        quadColours[q] = glm::vec4(expected.quadColours[q].r, expected.quadColours[q].g, expected.quadColours[q].b, 255);
+    computeVertexColours(expected.positions.size(), offsets.data(), expected.quads.data(), expected.quadCount(),
+                         quadColours.data(), vertexColours.data());
+
+    const std::string dir = makeTempDir();
+    const MeshlabRun run = runMeshlabServer({"-i", tank, "-o", dir + "/out.ply", "-m", "vc", "vn", "sa", "-s",
+                                             writeScript(dir, std::string(kFairingFilter) + kAttributeFilter)});
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    std::ifstream in(dir + "/out.ply");
+    std::string line;
+    size_t vertices = 0;
+    bool hasNormals = false, hasColours = false;
+    while (std::getline(in, line) && line != "end_header") {
+        if (line.rfind("element vertex", 0) == 0) vertices = std::stoul(line.substr(15));
+        hasNormals |= line == "property float nx";
+        hasColours |= line == "property uchar red";
+    }
+    ASSERT_EQ(vertices, expected.positions.size());
+    ASSERT_TRUE(hasNormals && hasColours);
+    for (size_t v = 0; v < vertices; ++v) {
+        float x, y, z, nx, ny, nz;
+        int r, g, b, a;
+        ASSERT_TRUE(in >> x >> y >> z >> nx >> ny >> nz >> r >> g >> b >> a);
+        EXPECT_NEAR(nx * nx + ny * ny + nz * nz, 1.0f, 1e-3f) << "vertex " << v;
+        EXPECT_NEAR(r, vertexColours[v].r, 1.0f) << "vertex " << v;
+        EXPECT_NEAR(g, vertexColours[v].g, 1.0f) << "vertex " << v;
+        EXPECT_NEAR(b, vertexColours[v].b, 1.0f) << "vertex " << v;
+    }
     fs::remove_all(dir);
 }
