@@ -15,51 +15,127 @@ uint32_t findRoot(std::vector<uint32_t> &parent, uint32_t f) {
     return f;
 }
 
-// Joins triangles that share a faux edge into polygons (union-find over faces). The importer
-// stores a quad's two triangles next to each other, so the common case is found without a map;
-// other faux edges are matched by sorting their vertex pairs.
-std::vector<uint32_t> polygonOfFace(const CMeshO &mesh, const std::vector<uint32_t> &faceIndex) {
-    const size_t faces = mesh.face.size();
-    std::vector<uint32_t> parent(faces);
-    for (size_t f = 0; f < faces; ++f) parent[f] = uint32_t(f);
+// The one faux edge of a face, or -1 when it has none or several.
+int singleFauxEdge(const CFaceO &f) {
+    const int count = int(f.IsF(0)) + int(f.IsF(1)) + int(f.IsF(2));
+    if (count != 1) return -1;
+    return f.IsF(0) ? 0 : f.IsF(1) ? 1 : 2;
+}
 
-    struct FauxEdge {
-        uint64_t key;
-        uint32_t face;
-    };
-    std::vector<FauxEdge> pending;
-    auto vertexId = [&](const CFaceO &f, int k) { return uint64_t(vcg::tri::Index(mesh, f.cV(k))); };
-    auto fauxKey = [&](const CFaceO &f, int e) {
-        const uint64_t a = vertexId(f, e), b = vertexId(f, (e + 1) % 3);
-        return std::min(a, b) << 32 | std::max(a, b);
-    };
-    auto hasFauxEdge = [&](size_t f, uint64_t key) {
-        if (f >= faces || faceIndex[f] == kNone) return false;
-        for (int e = 0; e < 3; ++e)
-            if (mesh.face[f].IsF(e) && fauxKey(mesh.face[f], e) == key) return true;
-        return false;
-    };
-    for (size_t f = 0; f < faces; ++f) {
-        const CFaceO &face = mesh.face[f];
-        if (faceIndex[f] == kNone) continue;
-        for (int e = 0; e < 3; ++e) {
-            if (!face.IsF(e)) continue;
-            const uint64_t key = fauxKey(face, e);
-            if (f > 0 && hasFauxEdge(f - 1, key)) continue;  // joined from the previous face
-            if (hasFauxEdge(f + 1, key)) {
-                parent[findRoot(parent, uint32_t(f + 1))] = findRoot(parent, uint32_t(f));
-                continue;
+class PolygonGatherer {
+public:
+    PolygonGatherer(const CMeshO &mesh, const std::vector<uint32_t> &arrayIndex, PolygonArrays &out)
+        : mesh_(mesh), arrayIndex_(arrayIndex), out_(out) {}
+
+    void run() {
+        out_.polygonOffsets.push_back(0);
+        std::vector<uint32_t> others;  // faces not in the common layouts below
+        const size_t faces = mesh_.face.size();
+        for (size_t f = 0; f < faces; ++f) {
+            const CFaceO &face = mesh_.face[f];
+            if (face.IsD()) continue;
+            const int e = singleFauxEdge(face);
+            if (!face.IsF(0) && !face.IsF(1) && !face.IsF(2)) {
+                emitTriangle(f);
+            } else if (e >= 0 && f + 1 < faces && isQuadPartner(face, e, mesh_.face[f + 1])) {
+                // The importer's layout (and vcg's quad meshes): a quad's triangles are neighbours.
+                emitQuad(f, e);
+                ++f;
+            } else {
+                others.push_back(uint32_t(f));
             }
-            pending.push_back({key, uint32_t(f)});
+        }
+        gatherGeneral(others);
+    }
+
+private:
+    uint32_t vertex(const CFaceO &f, int k) const { return uint32_t(vcg::tri::Index(mesh_, f.cV(k))); }
+
+    bool isQuadPartner(const CFaceO &first, int e, const CFaceO &second) const {
+        const int e2 = second.IsD() ? -1 : singleFauxEdge(second);
+        return e2 >= 0 && vertex(first, e) == vertex(second, (e2 + 1) % 3) &&
+               vertex(first, (e + 1) % 3) == vertex(second, e2);
+    }
+
+    void push(uint32_t meshVertex) {
+        const uint32_t v = arrayIndex_[meshVertex];
+        if (v != kNone) out_.polygonIndices.push_back(v);
+    }
+
+    void close(size_t face) {
+        out_.polygonOffsets.push_back(uint32_t(out_.polygonIndices.size()));
+        out_.polygonFace.push_back(uint32_t(face));
+    }
+
+    void emitTriangle(size_t f) {
+        for (int k = 0; k < 3; ++k) push(vertex(mesh_.face[f], k));
+        close(f);
+    }
+
+    // Triangles (A, B, C) and (B, A, D) sharing the faux edge A-B make the quad B, C, A, D,
+    // counter-clockwise like both triangles.
+    void emitQuad(size_t f, int e) {
+        const CFaceO &first = mesh_.face[f], &second = mesh_.face[f + 1];
+        const int e2 = singleFauxEdge(second);
+        push(vertex(first, (e + 1) % 3));
+        push(vertex(first, (e + 2) % 3));
+        push(vertex(first, e));
+        push(vertex(second, (e2 + 2) % 3));
+        close(f);
+    }
+
+    // Any other grouping: triangles joined by faux edges, found by sorting the edges' vertex
+    // pairs; each polygon lists its distinct vertices in order of appearance.
+    void gatherGeneral(const std::vector<uint32_t> &faces) {
+        if (faces.empty()) return;
+        std::vector<uint32_t> parent(faces.size());
+        for (size_t i = 0; i < faces.size(); ++i) parent[i] = uint32_t(i);
+        struct FauxEdge {
+            uint64_t key;
+            uint32_t item;
+        };
+        std::vector<FauxEdge> edges;
+        for (size_t i = 0; i < faces.size(); ++i) {
+            const CFaceO &face = mesh_.face[faces[i]];
+            for (int e = 0; e < 3; ++e) {
+                if (!face.IsF(e)) continue;
+                const uint64_t a = vertex(face, e), b = vertex(face, (e + 1) % 3);
+                edges.push_back({std::min(a, b) << 32 | std::max(a, b), uint32_t(i)});
+            }
+        }
+        std::sort(edges.begin(), edges.end(), [](const FauxEdge &x, const FauxEdge &y) { return x.key < y.key; });
+        for (size_t i = 0; i + 1 < edges.size(); ++i)
+            if (edges[i].key == edges[i + 1].key)
+                parent[findRoot(parent, edges[i].item)] = findRoot(parent, edges[i + 1].item);
+
+        // Members of each group, in face order (counting sort by root).
+        std::vector<uint32_t> start(faces.size() + 1, 0);
+        for (size_t i = 0; i < faces.size(); ++i) ++start[findRoot(parent, uint32_t(i)) + 1];
+        for (size_t i = 0; i < faces.size(); ++i) start[i + 1] += start[i];
+        std::vector<uint32_t> members(faces.size());
+        std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+        for (size_t i = 0; i < faces.size(); ++i) members[fill[parent[i]]++] = uint32_t(i);
+
+        for (size_t r = 0; r < faces.size(); ++r) {
+            if (start[r] == start[r + 1]) continue;
+            const size_t first = out_.polygonIndices.size();
+            for (uint32_t m = start[r]; m < start[r + 1]; ++m) {
+                const CFaceO &face = mesh_.face[faces[members[m]]];
+                for (int k = 0; k < 3; ++k) {
+                    const uint32_t v = arrayIndex_[vertex(face, k)];
+                    if (v != kNone && std::find(out_.polygonIndices.begin() + long(first), out_.polygonIndices.end(), v) ==
+                                          out_.polygonIndices.end())
+                        out_.polygonIndices.push_back(v);
+                }
+            }
+            close(faces[members[start[r]]]);
         }
     }
-    std::sort(pending.begin(), pending.end(), [](const FauxEdge &x, const FauxEdge &y) { return x.key < y.key; });
-    for (size_t i = 0; i + 1 < pending.size(); ++i)
-        if (pending[i].key == pending[i + 1].key)
-            parent[findRoot(parent, pending[i].face)] = findRoot(parent, pending[i + 1].face);
-    for (size_t f = 0; f < faces; ++f) parent[f] = findRoot(parent, uint32_t(f));
-    return parent;
-}
+
+    const CMeshO &mesh_;
+    const std::vector<uint32_t> &arrayIndex_;
+    PolygonArrays &out_;
+};
 
 }  // namespace
 
@@ -71,6 +147,7 @@ PolygonArrays polygonArrays(const CMeshO &mesh) {
     out.polygonOffsets.reserve(size_t(mesh.fn) + 1);
     out.polygonFace.reserve(size_t(mesh.fn));
     out.polygonIndices.reserve(2 * size_t(mesh.fn) + 2);  // quads: 4 indices per 2 triangles
+
     std::vector<uint32_t> arrayIndex(mesh.vert.size(), kNone);
     for (size_t v = 0; v < mesh.vert.size(); ++v) {
         const CVertexO &vert = mesh.vert[v];
@@ -82,38 +159,7 @@ PolygonArrays polygonArrays(const CMeshO &mesh) {
         out.vertexOf.push_back(uint32_t(v));
         out.selected.push_back(vert.IsS() ? 1 : 0);
     }
-
-    std::vector<uint32_t> faceIndex(mesh.face.size(), kNone);
-    for (size_t f = 0; f < mesh.face.size(); ++f)
-        if (!mesh.face[f].IsD()) faceIndex[f] = uint32_t(f);
-    const std::vector<uint32_t> root = polygonOfFace(mesh, faceIndex);
-
-    // Gather each polygon's faces (counting sort by root), then its distinct vertices.
-    std::vector<uint32_t> start(mesh.face.size() + 1, 0);
-    for (size_t f = 0; f < mesh.face.size(); ++f)
-        if (faceIndex[f] != kNone) ++start[root[f] + 1];
-    for (size_t i = 0; i < mesh.face.size(); ++i) start[i + 1] += start[i];
-    std::vector<uint32_t> members(start.back());
-    std::vector<uint32_t> fill(start.begin(), start.end() - 1);
-    for (size_t f = 0; f < mesh.face.size(); ++f)
-        if (faceIndex[f] != kNone) members[fill[root[f]]++] = uint32_t(f);
-
-    out.polygonOffsets.push_back(0);
-    for (size_t r = 0; r < mesh.face.size(); ++r) {
-        if (start[r] == start[r + 1]) continue;
-        const size_t first = out.polygonIndices.size();
-        for (uint32_t i = start[r]; i < start[r + 1]; ++i) {
-            const CFaceO &face = mesh.face[members[i]];
-            for (int k = 0; k < 3; ++k) {
-                const uint32_t v = arrayIndex[vcg::tri::Index(mesh, face.cV(k))];
-                if (v == kNone) continue;
-                if (std::find(out.polygonIndices.begin() + long(first), out.polygonIndices.end(), v) == out.polygonIndices.end())
-                    out.polygonIndices.push_back(v);
-            }
-        }
-        out.polygonOffsets.push_back(uint32_t(out.polygonIndices.size()));
-        out.polygonFace.push_back(members[start[r]]);
-    }
+    PolygonGatherer(mesh, arrayIndex, out).run();
     return out;
 }
 
