@@ -1,15 +1,17 @@
 // Fidelity of the smoothers on voxelized analytic shapes (shared by tools/compare_smoothing and
-// the fidelity test): voxelize, extract the boundary quads (section 4.2), smooth, and measure the
+// the fidelity tests): voxelize, extract the boundary quads (section 4.2), smooth, and measure the
 // distance of the triangulated result to the true surface (shapes/surface_error.h).
 #pragma once
 
 #include "attributes/triangulate.h"
 #include "extraction/boundary_surface.h"
+#include "fairing/constrained_fairing.h"
 #include "fairing/lanczos_fairing.h"
 #include "fairing/vcg_taubin.h"
 #include "shapes/analytic_shapes.h"
 #include "shapes/surface_error.h"
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -30,6 +32,45 @@ inline std::vector<shapes::Shape> comparisonShapes() {
     return list;
 }
 
+// A wider set for the second mode (constrained_fairing.h), so nothing is tuned to one input:
+// spheres of radius 6 to 24 at three sub-voxel offsets each (the last one puts the centre on a
+// voxel centre in x and y), tori with axes along z, x and (1, 1, 1), capped cylinders of radius 3
+// to 6 along each axis, and lattice-aligned boxes down to 2 voxels thin.
+struct FamilyShape {
+    std::string family;  // "sphere", "torus", "cylinder", "box"
+    shapes::Shape shape;
+    double size = 0.0;   // sphere radius, torus major radius, cylinder radius, box smallest side
+};
+
+inline std::vector<FamilyShape> fidelityShapes() {
+    using glm::dvec3;
+    std::vector<FamilyShape> list;
+    const dvec3 offsets[3] = {{0.31, 0.17, 0.43}, {0.77, 0.52, 0.09}, {0.5, 0.5, 0.0}};
+    for (double r : {6.0, 9.0, 12.0, 18.0, 24.0})
+        for (int i = 0; i < 3; ++i) {
+            list.push_back({"sphere", shapes::sphere(dvec3(r + 2.0) + offsets[i], r), r});
+            list.back().shape.name += std::string(" ") + "abc"[i];
+        }
+    list.push_back({"torus", shapes::torus(dvec3(22.37, 21.71, 8.29), dvec3(0, 0, 1), 14.0, 5.0), 14.0});
+    list.push_back({"torus", shapes::torus(dvec3(8.61, 16.13, 16.55), dvec3(1, 0, 0), 12.0, 4.0), 12.0});
+    list.push_back({"torus", shapes::torus(dvec3(24.2, 24.7, 24.4), dvec3(1, 1, 1), 16.0, 6.0), 16.0});
+    for (double r : {3.0, 4.0, 5.0, 6.0})
+        for (int axis = 0; axis < 3; ++axis) {
+            dvec3 a(r + 2.37, r + 2.61, r + 2.83), b = a;
+            a[axis] = 3.0;
+            b[axis] = 33.0;
+            list.push_back({"cylinder", shapes::cappedCylinder(a, b, r), r});
+            list.back().shape.name += std::string(" ") + "xyz"[axis];
+        }
+    const dvec3 boxes[4][2] = {{{12, 11, 10}, {9, 8, 7}}, {{5, 6, 7}, {3, 4, 5}}, {{4, 4, 4}, {1, 1, 1}}, {{10, 10, 10}, {6, 1, 3}}};
+    for (const auto &b : boxes) {
+        list.push_back({"box", shapes::box(b[0], b[1]), 2.0 * std::min({b[1].x, b[1].y, b[1].z})});
+        list.back().shape.name += " " + std::to_string(int(2 * b[1].x)) + "x" + std::to_string(int(2 * b[1].y)) +
+                                  "x" + std::to_string(int(2 * b[1].z));
+    }
+    return list;
+}
+
 struct Row {
     std::string shape;
     std::string method;
@@ -41,8 +82,10 @@ struct Options {
     bool taubin = true;  // when vcglib is available
 };
 
-// Raw voxel surface, one default pass of the paper's fairing, and (with vcglib) MeshLab's
-// Taubin Smooth with its defaults on the same triangulation.
+inline constexpr const char kConstrainedMethod[] = "constrained";
+
+// Raw voxel surface, one default pass of the paper's fairing, (with vcglib) MeshLab's Taubin
+// Smooth with its defaults on the same triangulation, and the second mode with its defaults.
 inline std::vector<Row> compare(const shapes::Shape &shape, const Options &options = {}) {
     const BoundarySurface surface = extractBoundarySurface(shapes::voxelize(shape));
     const size_t quadCount = surface.quadCount();
@@ -70,6 +113,10 @@ inline std::vector<Row> compare(const shapes::Shape &shape, const Options &optio
         measure("vcg Taubin (10)", taubin);
     }
 #endif
+
+    std::vector<glm::vec3> constrained = surface.positions;
+    fairConstrained(constrained.data(), constrained.size(), offsets.data(), surface.quads.data(), quadCount, nullptr);
+    measure(kConstrainedMethod, constrained);
     return rows;
 }
 
