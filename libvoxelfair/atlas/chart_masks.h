@@ -1,0 +1,67 @@
+// A chart as the packers see it: its triangles rasterised at the packing density (conservative
+// coverage, the texels the bake will write) and grown by `padding` texels on every side
+// (a square, Chebyshev, dilation). Two masks placed without overlap therefore keep their
+// charts at least 2 * padding empty texels apart: the gutter.
+#pragma once
+
+#include "atlas/charts.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+namespace voxelfair {
+
+struct ChartMask {
+    int width = 0, height = 0;
+    // Texel coordinates of the chart inside its mask: wedgeUv * scale + offset, where scale is
+    // the density (1 for degenerate charts, whose UVs are already texels).
+    double scale = 0;
+    glm::dvec2 offset{0.0};
+    size_t coveredTexels = 0;  // conservative footprint, before the padding
+    size_t maskTexels = 0;     // set texels, padding included
+    // Into ChartMasks::profiles: for each column x of the mask its lowest and highest set row,
+    // for each row y its leftmost and rightmost set column.
+    size_t profile = 0;
+    const int16_t *colBottom(const std::vector<int16_t> &p) const { return p.data() + profile; }
+    const int16_t *colTop(const std::vector<int16_t> &p) const { return p.data() + profile + width; }
+    const int16_t *rowLeft(const std::vector<int16_t> &p) const { return p.data() + profile + 2 * width; }
+    const int16_t *rowRight(const std::vector<int16_t> &p) const {
+        return p.data() + profile + 2 * width + height;
+    }
+};
+
+struct ChartMasks {
+    std::vector<ChartMask> charts;
+    std::vector<int16_t> profiles;
+    double texelsPerUnit = 0;
+    int padding = 0;
+    size_t totalMaskTexels = 0;  // no packing of the masks takes less room
+};
+
+// Where a packer put a chart: the mask's lower-left corner in the texture, after turning it by
+// quarterTurns * 90 degrees counter-clockwise (turnInMask).
+struct ChartPlacement {
+    int x = 0, y = 0;
+    int quarterTurns = 0;
+};
+
+// Rasterises every chart at `texelsPerUnit`. Returns false (and leaves `masks` partial) as soon
+// as a mask would be wider or taller than maxSide, which bounds the work for absurd densities.
+bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int padding, int maxSide,
+                         ChartMasks &masks);
+
+// The mask-local texel position of chart point `p` (scaled and offset already) after `quarterTurns`
+// counter-clockwise turns of the width x height mask; integer texels map to integer texels.
+inline glm::dvec2 turnInMask(glm::dvec2 p, int width, int height, int quarterTurns) {
+    switch (quarterTurns & 3) {
+    case 1: return {height - p.y, p.x};
+    case 2: return {width - p.x, height - p.y};
+    case 3: return {p.y, width - p.x};
+    default: return p;
+    }
+}
+
+}  // namespace voxelfair

@@ -1,0 +1,69 @@
+#include "atlas/chart_overlap.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/common.hpp>
+
+namespace voxelfair {
+namespace {
+
+double orient(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) { return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x); }
+
+bool cross(const ChartBoundaryEdge &e, const ChartBoundaryEdge &f) {
+    if (e.va == f.va || e.va == f.vb || e.vb == f.va || e.vb == f.vb)
+        return false;
+    const glm::dvec2 ea(e.a), eb(e.b), fa(f.a), fb(f.b);
+    const double o1 = orient(ea, eb, fa), o2 = orient(ea, eb, fb);
+    const double o3 = orient(fa, fb, ea), o4 = orient(fa, fb, eb);
+    return ((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0));
+}
+
+}  // namespace
+
+bool boundaryCrossesItself(const std::vector<ChartBoundaryEdge> &edges) {
+    const size_t n = edges.size();
+    if (n < 4)  // a triangle's three edges cannot cross
+        return false;
+    if (n <= 32) {
+        for (size_t i = 0; i < n; ++i)
+            for (size_t j = i + 1; j < n; ++j)
+                if (cross(edges[i], edges[j]))
+                    return true;
+        return false;
+    }
+    glm::vec2 lo(INFINITY), hi(-INFINITY);
+    for (const ChartBoundaryEdge &e : edges) {
+        lo = glm::min(lo, glm::min(e.a, e.b));
+        hi = glm::max(hi, glm::max(e.a, e.b));
+    }
+    const int cells = int(std::ceil(std::sqrt(double(n))));
+    const glm::vec2 extent = glm::max(hi - lo, glm::vec2(1e-20f));
+    auto cellOf = [&](float v, int axis) {
+        return std::clamp(int((v - lo[axis]) / extent[axis] * float(cells)), 0, cells - 1);
+    };
+    // Edges bucketed by the cells their boxes touch (counting sort: count, offsets, fill).
+    std::vector<uint32_t> first(size_t(cells) * cells + 1, 0), items;
+    auto forCells = [&](const ChartBoundaryEdge &e, auto &&visit) {
+        const glm::vec2 a = glm::min(e.a, e.b), b = glm::max(e.a, e.b);
+        for (int y = cellOf(a.y, 1); y <= cellOf(b.y, 1); ++y)
+            for (int x = cellOf(a.x, 0); x <= cellOf(b.x, 0); ++x)
+                visit(size_t(y) * cells + x);
+    };
+    for (const ChartBoundaryEdge &e : edges)
+        forCells(e, [&](size_t cell) { ++first[cell + 1]; });
+    for (size_t c = 0; c + 1 < first.size(); ++c)
+        first[c + 1] += first[c];
+    items.resize(first.back());
+    std::vector<uint32_t> fill(first.begin(), first.end() - 1);
+    for (size_t i = 0; i < n; ++i)
+        forCells(edges[i], [&](size_t cell) { items[fill[cell]++] = uint32_t(i); });
+    for (size_t c = 0; c + 1 < first.size(); ++c)
+        for (uint32_t i = first[c]; i < first[c + 1]; ++i)
+            for (uint32_t j = i + 1; j < first[c + 1]; ++j)
+                if (cross(edges[items[i]], edges[items[j]]))
+                    return true;
+    return false;
+}
+
+}  // namespace voxelfair

@@ -1,0 +1,227 @@
+#include "atlas/charts.h"
+
+#include "atlas/chart_overlap.h"
+#include "atlas/edge_adjacency.h"
+#include "atlas/seed_plane.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+namespace voxelfair {
+namespace {
+
+bool finite(const glm::vec3 &v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// Stable LSD radix sort of `items` by `keys` (ascending), 8 bits per pass, skipping passes where
+// every key has the same digit. Linear time for the seed order of large meshes.
+void radixSortByKey(std::vector<uint32_t> &items, std::vector<uint32_t> &keys) {
+    std::vector<uint32_t> items2(items.size()), keys2(keys.size());
+    for (int shift = 0; shift < 32; shift += 8) {
+        size_t count[257] = {};
+        for (uint32_t k : keys)
+            ++count[((k >> shift) & 0xFF) + 1];
+        if (std::find(count + 1, count + 257, keys.size()) != count + 257)
+            continue;
+        for (int d = 0; d < 256; ++d)
+            count[d + 1] += count[d];
+        for (size_t i = 0; i < keys.size(); ++i) {
+            const size_t at = count[(keys[i] >> shift) & 0xFF]++;
+            items2[at] = items[i];
+            keys2[at] = keys[i];
+        }
+        items.swap(items2);
+        keys.swap(keys2);
+    }
+}
+
+}  // namespace
+
+AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
+    AtlasCharts out;
+    out.status = validateAtlasMesh(mesh, &out.message);
+    if (out.status != AtlasStatus::Ok)
+        return out;
+    const size_t faceCount = mesh.faceCount;
+    const float cone = options.minSeedCosine >= 0.05f ? std::min(options.minSeedCosine, 1.0f) : 0.05f;
+
+    // Per face, the unit normal that chooses seeds and cones (the caller's when usable, else the
+    // geometric one) and the unit geometric normal; both zero for a degenerate face, which so
+    // never passes a cone test (cone >= 0.05). Side by side for the breadth-first search.
+    struct FaceNormals {
+        glm::vec3 cone, geometric;
+    };
+    std::vector<FaceNormals> normals(faceCount, FaceNormals{glm::vec3(0.0f), glm::vec3(0.0f)});
+    std::vector<uint8_t> degenerate(faceCount, 0);
+    for (size_t f = 0; f < faceCount; ++f) {
+        const uint32_t *t = mesh.triangles + 3 * f;
+        const glm::dvec3 p0 = mesh.positions[t[0]], p1 = mesh.positions[t[1]], p2 = mesh.positions[t[2]];
+        if (!finite(glm::vec3(p0)) || !finite(glm::vec3(p1)) || !finite(glm::vec3(p2))) {
+            degenerate[f] = 1;
+            ++out.nonFiniteFaces;
+            continue;
+        }
+        const glm::dvec3 cross = glm::cross(p1 - p0, p2 - p0);
+        const double longest2 = std::max({glm::dot(p1 - p0, p1 - p0), glm::dot(p2 - p0, p2 - p0),
+                                          glm::dot(p2 - p1, p2 - p1)});
+        const double length = glm::length(cross);
+        if (!(length > 1e-6 * longest2) || !std::isfinite(length)) {
+            degenerate[f] = 1;
+            continue;
+        }
+        FaceNormals &n = normals[f];
+        n.geometric = n.cone = glm::vec3(cross / length);
+        if (mesh.faceNormals) {
+            const glm::vec3 given = mesh.faceNormals[f];
+            const float len = glm::length(given);
+            if (finite(given) && len > 0 && std::isfinite(len) && glm::dot(given / len, n.geometric) >= cone)
+                n.cone = given / len;
+            else
+                ++out.ignoredNormals;
+        }
+    }
+
+    // Seed order: largest |component| first, face order among equals. For positive floats the
+    // bit pattern orders like the value, so ~bits sorts descending.
+    std::vector<uint32_t> order, keys;
+    order.reserve(faceCount);
+    keys.reserve(faceCount);
+    for (size_t f = 0; f < faceCount; ++f) {
+        if (degenerate[f])
+            continue;
+        const glm::vec3 &n = normals[f].cone;
+        const float priority = std::max({std::abs(n.x), std::abs(n.y), std::abs(n.z)});
+        uint32_t bits;
+        std::memcpy(&bits, &priority, sizeof bits);
+        order.push_back(uint32_t(f));
+        keys.push_back(~bits);
+    }
+    radixSortByKey(order, keys);
+
+    EdgeAdjacency adjacency = buildEdgeAdjacency(mesh.triangles, faceCount, mesh.vertexCount);
+    if (adjacency.borderEdges > faceCount) {
+        // More border edges than faces: the mesh stores its corners unshared. Match edges by
+        // position instead (vertex ids still tell the UV seams apart).
+        const std::vector<uint32_t> welded = weldByPosition(mesh.positions, mesh.vertexCount, mesh.triangles, faceCount);
+        adjacency = buildEdgeAdjacency(welded.data(), faceCount, mesh.vertexCount);
+        out.weldedByPosition = true;
+    }
+    out.nonManifoldEdges = adjacency.nonManifoldEdges;
+    out.borderEdges = adjacency.borderEdges;
+
+    constexpr uint32_t kFree = std::numeric_limits<uint32_t>::max();
+    out.faceChart.assign(faceCount, kFree);
+    out.chartFaces.reserve(faceCount);
+    out.wedgeUv.resize(3 * faceCount);
+
+    // Breadth-first growth from `seed`; chartFaces doubles as the queue.
+    auto grow = [&](uint32_t seed) {
+        const uint32_t chart = uint32_t(out.chartAxis.size());
+        const glm::vec3 axis = normals[seed].cone;
+        out.chartAxis.push_back(axis);
+        out.chartFirstFace.push_back(uint32_t(out.chartFaces.size()));
+        out.faceChart[seed] = chart;
+        out.chartFaces.push_back(seed);
+        for (size_t q = out.chartFirstFace.back(); q < out.chartFaces.size(); ++q) {
+            const uint32_t f = out.chartFaces[q];
+            for (uint32_t h = 3 * f; h < 3 * f + 3; ++h) {
+                const uint32_t o = adjacency.opposite[h];
+                if (o == kNoOpposite || out.faceChart[o / 3] != kFree)
+                    continue;
+                const FaceNormals &n = normals[o / 3];
+                if (glm::dot(axis, n.cone) >= cone && glm::dot(axis, n.geometric) >= cone) {
+                    out.faceChart[o / 3] = chart;
+                    out.chartFaces.push_back(o / 3);
+                }
+            }
+        }
+        return chart;
+    };
+
+    // Orthographic projection of the last chart onto its seed plane, relative to the seed's
+    // first corner (keeps the numbers small), shifted so its box starts at the origin.
+    auto project = [&](size_t c) {
+        const size_t first = out.chartFirstFace[c], end = out.chartFaces.size();
+        glm::vec2 *uv = out.wedgeUv.data() + 3 * first, *uvEnd = out.wedgeUv.data() + 3 * end;
+        const SeedPlane plane = seedPlane(glm::normalize(glm::dvec3(out.chartAxis[c])));
+        const uint32_t *faces = out.chartFaces.data() + first;
+        const glm::dvec3 origin = mesh.positions[mesh.triangles[3 * faces[0]]];
+        glm::vec2 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+        for (glm::vec2 *w = uv; w != uvEnd; ++faces)
+            for (int k = 0; k < 3; ++k, ++w) {
+                const glm::dvec3 d = glm::dvec3(mesh.positions[mesh.triangles[3 * *faces + k]]) - origin;
+                *w = glm::vec2(glm::dot(d, plane.t1), glm::dot(d, plane.t2));
+                lo = glm::min(lo, *w);
+                hi = glm::max(hi, *w);
+            }
+        for (glm::vec2 *w = uv; w != uvEnd; ++w)
+            *w -= lo;
+        out.chartSize.push_back(hi - lo);
+    };
+
+    // Whether the last chart's projection winds over itself (chart_overlap.h).
+    std::vector<ChartBoundaryEdge> boundary;
+    auto foldsOver = [&](uint32_t c) {
+        boundary.clear();
+        for (size_t i = out.chartFirstFace[c]; i < out.chartFaces.size(); ++i) {
+            const uint32_t f = out.chartFaces[i];
+            for (int k = 0; k < 3; ++k) {
+                const uint32_t o = adjacency.opposite[3 * f + k];
+                if (o != kNoOpposite && out.faceChart[o / 3] == c)
+                    continue;
+                const int k1 = (k + 1) % 3;
+                boundary.push_back({out.wedgeUv[3 * i + k], out.wedgeUv[3 * i + k1], mesh.triangles[3 * f + k],
+                                    mesh.triangles[3 * f + k1]});
+            }
+        }
+        return boundaryCrossesItself(boundary);
+    };
+
+    // Charts in seed order. A chart that winds over itself keeps the half of its faces nearest
+    // its seed (a prefix of the breadth-first order, so still connected) until it does not;
+    // the faces it lets go are charted in a further pass.
+    for (bool released = true; released;) {
+        released = false;
+        for (uint32_t seed : order) {
+            if (out.faceChart[seed] != kFree)
+                continue;
+            const uint32_t c = grow(seed);
+            project(c);
+            while (foldsOver(c)) {
+                const size_t first = out.chartFirstFace[c];
+                const size_t keep = first + std::max<size_t>(1, (out.chartFaces.size() - first) / 2);
+                for (size_t i = keep; i < out.chartFaces.size(); ++i)
+                    out.faceChart[out.chartFaces[i]] = kFree;
+                out.chartFaces.resize(keep);
+                out.chartSize.pop_back();
+                project(c);
+                ++out.foldedCharts;
+                released = true;
+            }
+        }
+    }
+
+    // Degenerate faces: one chart each, a fixed right triangle of one texel.
+    for (size_t f = 0; f < faceCount; ++f) {
+        if (!degenerate[f])
+            continue;
+        ++out.degenerateFaces;
+        glm::vec2 *uv = out.wedgeUv.data() + 3 * out.chartFaces.size();
+        uv[0] = {0, 0};
+        uv[1] = {1, 0};
+        uv[2] = {0, 1};
+        out.faceChart[f] = uint32_t(out.chartAxis.size());
+        out.chartAxis.push_back(glm::vec3(0.0f));
+        out.chartSize.push_back({1, 1});
+        out.chartFirstFace.push_back(uint32_t(out.chartFaces.size()));
+        out.chartFaces.push_back(uint32_t(f));
+    }
+    out.chartFirstFace.push_back(uint32_t(out.chartFaces.size()));
+    return out;
+}
+
+}  // namespace voxelfair

@@ -1,0 +1,83 @@
+// Stage 1 of the atlas (paper section 4.5): split the mesh into charts and project each onto
+// the plane of its seed face.
+//
+//   * Seeds: faces ordered by the largest absolute component of their unit normal, descending
+//     (the most axis-aligned faces start charts first); ties keep face order.
+//   * Growth: breadth-first over edge-adjacent faces; an unassigned neighbour joins when its
+//     normal is within the cone around the SEED face's normal (not the neighbour's), as the
+//     authors did (vxlse3-notes §6b). Non-manifold edges are chart borders. A mesh storing its
+//     corners unshared (more border edges than faces) has its edges matched by position.
+//   * Beyond the paper: a chart whose projection winds over itself (a helical ramp) is cut
+//     back to the half of its faces nearest the seed until it does not (chart_overlap.h), so
+//     no texel is shared by two faces.
+//   * Projection: orthographic onto the seed plane (seed_plane.h), in model units, so every
+//     chart has the same texel density once packed. UVs are per wedge (3 per face): a vertex on
+//     a chart border simply gets one UV per chart, which is the paper's vertex cloning.
+//
+// Stretch: a face at angle t to its seed normal is shrunk by cos t across one direction and kept
+// along the other, so the singular values of the (density-normalised) map from the surface to
+// UV are 1 and cos t >= minSeedCosine. Both cone tests below use the geometric normal too, so
+// the bound holds even with caller-given normals.
+//
+// Degenerate faces (area below 1e-6 of the squared longest edge, or a vertex not finite) have
+// no plane to project on: each gets its own chart whose UV triangle is fixed in texels,
+// (0,0) (1,0) (0,1), so it still has positive UV area and shows its colour in one texel.
+#pragma once
+
+#include "atlas/atlas_mesh.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+namespace voxelfair {
+
+struct ChartOptions {
+    // A face joins a chart when dot(seed normal, face normal) >= minSeedCosine. Default 0.7
+    // (about 45.6 degrees) is the authors' C_TEX_MIN_ANGLE (vxlse3-notes §6b); the paper's text
+    // states theta_min = 60 degrees, i.e. 0.5. Clamped to [0.05, 1]: the cone must stay inside
+    // the hemisphere, or faces would fold over in the projection.
+    float minSeedCosine = 0.7f;
+};
+
+struct AtlasCharts {
+    AtlasStatus status = AtlasStatus::Ok;
+    std::string message;
+
+    // Chart c holds faces chartFaces[chartFirstFace[c] .. chartFirstFace[c + 1]), seed first,
+    // then in breadth-first order. Charts are numbered in seed order; degenerate faces' charts last.
+    std::vector<uint32_t> chartFirstFace;
+    std::vector<uint32_t> chartFaces;
+    std::vector<uint32_t> faceChart;
+    // The projection direction (unit seed normal); (0,0,0) marks a degenerate face's chart.
+    std::vector<glm::vec3> chartAxis;
+    // Size of the projected chart; its wedge UVs lie in [0, size]. Model units, except for
+    // degenerate charts, whose UVs and size are in texels.
+    std::vector<glm::vec2> chartSize;
+    // Chart-local UVs (bounding box starting at the origin), three per entry of chartFaces:
+    // wedgeUv[3 * i + k] is corner k of face chartFaces[i]. Stored in chart order so the later
+    // stages read each chart contiguously.
+    std::vector<glm::vec2> wedgeUv;
+
+    size_t degenerateFaces = 0;    // faces given their own tiny chart (includes nonFiniteFaces)
+    size_t nonFiniteFaces = 0;     // faces with a vertex that is not finite
+    size_t ignoredNormals = 0;     // given normals not finite, zero, or outside the face's own cone
+    size_t foldedCharts = 0;       // times a chart winding over itself in UV was cut back
+    size_t nonManifoldEdges = 0;   // edges of three or more faces, used as chart borders
+    size_t borderEdges = 0;        // edges of one face (open meshes)
+    bool weldedByPosition = false; // corners were unshared: edges were matched by position
+
+    size_t chartCount() const { return chartAxis.size(); }
+    size_t faceCount() const { return faceChart.size(); }
+    bool isDegenerate(size_t chart) const {
+        return chartAxis[chart].x == 0 && chartAxis[chart].y == 0 && chartAxis[chart].z == 0;
+    }
+};
+
+AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options = {});
+
+}  // namespace voxelfair

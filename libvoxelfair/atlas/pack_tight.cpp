@@ -1,0 +1,244 @@
+#include "atlas/pack_tight.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <numeric>
+#include <tuple>
+#include <unordered_map>
+
+namespace voxelfair {
+namespace {
+
+// A chart as the search sees it, after a quarter turn: per row, the span between its leftmost
+// and rightmost texel (holes inside a row are not reused), and the rows in decreasing width.
+struct Shape {
+    int width = 0, height = 0;
+    std::vector<int16_t> left, right;
+    std::vector<int> widestFirst;
+    int length(int r) const { return right[size_t(r)] - left[size_t(r)] + 1; }
+};
+
+// The shape of mask `m` turned by `turns` quarter turns counter-clockwise (turnInMask), or its
+// bounding box.
+void turnedShape(const ChartMask &m, const std::vector<int16_t> &profiles, int turns, bool box, Shape &s) {
+    const int16_t *colBottom = m.colBottom(profiles), *colTop = m.colTop(profiles);
+    const int16_t *rowLeft = m.rowLeft(profiles), *rowRight = m.rowRight(profiles);
+    const int w = m.width, h = m.height;
+    s.width = turns & 1 ? h : w;
+    s.height = turns & 1 ? w : h;
+    s.left.resize(size_t(s.height));
+    s.right.resize(size_t(s.height));
+    for (int r = 0; r < s.height; ++r) {
+        int16_t &left = s.left[size_t(r)], &right = s.right[size_t(r)];
+        if (box) {
+            left = 0, right = int16_t(s.width - 1);
+            continue;
+        }
+        switch (turns) {
+        case 0: left = rowLeft[r], right = rowRight[r]; break;
+        case 1: left = int16_t(h - 1 - colTop[r]), right = int16_t(h - 1 - colBottom[r]); break;
+        case 2: left = int16_t(w - 1 - rowRight[h - 1 - r]), right = int16_t(w - 1 - rowLeft[h - 1 - r]); break;
+        default: left = colBottom[w - 1 - r], right = colTop[w - 1 - r]; break;
+        }
+    }
+    // The widest row admits the fewest places, so it is tested first and the others mostly
+    // confirm it.
+    s.widestFirst.resize(size_t(s.height));
+    std::iota(s.widestFirst.begin(), s.widestFirst.end(), 0);
+    std::stable_sort(s.widestFirst.begin(), s.widestFirst.end(),
+                     [&](int a, int b) { return s.length(a) > s.length(b); });
+}
+
+// The free texels of a square atlas, row by row. run(y)[x] > 0: x is free and starts a free run
+// of exactly that length; run(y)[x] < 0: x is taken, and so are the next -run(y)[x] - 1 texels
+// (a safe jump, maybe short of the next free texel). Per block of kBlock texels, the longest run
+// starting in it lets searches skip whole blocks.
+class FreeRuns {
+public:
+    static constexpr int kBlock = 64;
+
+    explicit FreeRuns(int side)
+        : side_(side), blocks_((side + kBlock - 1) / kBlock), run_(size_t(side) * side),
+          blockMax_(size_t(side) * blocks_), widest_(size_t(side), int16_t(side)), firstRow_(size_t(side) + 1, 0) {
+        for (int y = 0; y < side; ++y) {
+            for (int x = 0; x < side; ++x)
+                run_[size_t(y) * side + x] = int16_t(side - x);
+            for (int b = 0; b < blocks_; ++b)
+                blockMax_[size_t(y) * blocks_ + b] = int16_t(side - b * kBlock);
+        }
+    }
+
+    int16_t at(int y, int x) const { return run_[size_t(y) * side_ + x]; }
+    int widest(int y) const { return widest_[size_t(y)]; }
+
+    // The lowest row with a free run of at least `length`. Runs only ever shrink, so each
+    // length's answer only moves up: amortised O(side) per length over a whole packing.
+    int firstRow(int length) {
+        int &row = firstRow_[size_t(length)];
+        while (row < side_ && widest_[size_t(row)] < length)
+            ++row;
+        return row;
+    }
+
+    // The first x >= from in row y starting a free run of at least `length`, or -1.
+    int nextRun(int y, int from, int length) const {
+        const int16_t *r = &run_[size_t(y) * side_];
+        const int16_t *blockMax = &blockMax_[size_t(y) * blocks_];
+        int x = from;
+        while (x < side_) {
+            const int b = x / kBlock;
+            if (blockMax[b] < length) {
+                x = (b + 1) * kBlock;
+                continue;
+            }
+            const int end = std::min(side_, (b + 1) * kBlock);
+            while (x < end) {
+                const int v = r[x];
+                if (v >= length)
+                    return x;
+                x += v > 0 ? v : -v;
+            }
+        }
+        return -1;
+    }
+
+    // Marks [x0, x1] of row y taken. A taken texel's value only needs to be a safe jump (its
+    // taken stretch never shrinks), so only the span itself and the free texels just left of it
+    // (whose runs now end at x0) are rewritten.
+    void take(int y, int x0, int x1) {
+        int16_t *r = &run_[size_t(y) * side_];
+        int16_t next = x1 + 1 < side_ && r[x1 + 1] < 0 ? r[x1 + 1] : int16_t(0);
+        for (int x = x1; x >= x0; --x)
+            r[x] = --next;
+        int x = x0 - 1;
+        for (; x >= 0 && r[x] > 0; --x)
+            r[x] = int16_t(x0 - x);
+        int16_t *blockMax = &blockMax_[size_t(y) * blocks_];
+        for (int b = (x + 1) / kBlock; b <= x1 / kBlock; ++b) {
+            const int end = std::min(side_, (b + 1) * kBlock);
+            blockMax[b] = std::max<int16_t>(0, *std::max_element(r + b * kBlock, r + end));
+        }
+        widest_[size_t(y)] = *std::max_element(blockMax, blockMax + blocks_);
+    }
+
+private:
+    int side_, blocks_;
+    std::vector<int16_t> run_, blockMax_, widest_;
+    std::vector<int> firstRow_;
+};
+
+// The lowest, then leftmost, free place for `shape` in a side x side atlas from row y, column x
+// on, with its top below `topLimit`. Returns true with (y, x) set; false with y at the first row
+// not searched.
+bool lowestFit(const FreeRuns &runs, const Shape &shape, int side, int topLimit, int &y, int &x) {
+    const int wr = shape.widestFirst[0], wrLength = shape.length(wr);
+    for (; y + shape.height <= side && y + shape.height < topLimit; ++y, x = 0) {
+        // Every row of the chart needs a long enough run somewhere in its atlas row.
+        bool possible = true;
+        for (int r : shape.widestFirst)
+            if (runs.widest(y + r) < shape.length(r)) {
+                possible = false;
+                break;
+            }
+        if (!possible)
+            continue;
+        while (x + shape.width <= side) {
+            const int p = runs.nextRun(y + wr, x + shape.left[size_t(wr)], wrLength);
+            if (p < 0)
+                break;
+            x = p - shape.left[size_t(wr)];
+            if (x + shape.width > side)
+                break;
+            bool fits = true;
+            for (size_t k = 1; k < shape.widestFirst.size(); ++k) {
+                const int r = shape.widestFirst[k];
+                const int v = runs.at(y + r, x + shape.left[size_t(r)]);
+                if (v < shape.length(r)) {
+                    x += v > 0 ? v + 1 : -v;  // past the obstacle this row met
+                    fits = false;
+                    break;
+                }
+            }
+            if (fits)
+                return true;
+        }
+    }
+    return false;
+}
+
+}  // namespace
+
+TightPacking packTight(const ChartMasks &masks, int side, bool allowTurns, std::vector<ChartPlacement> &placements) {
+    TightPacking result;
+    const size_t charts = masks.charts.size();
+    placements.assign(charts, ChartPlacement{});
+    auto area = [&](uint32_t c) { return int64_t(masks.charts[c].width) * masks.charts[c].height; };
+    auto longSide = [&](uint32_t c) { return std::max(masks.charts[c].width, masks.charts[c].height); };
+    std::vector<uint32_t> order(charts);
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+        if (longSide(a) != longSide(b))
+            return longSide(a) > longSide(b);
+        return area(a) != area(b) ? area(a) > area(b) : a < b;
+    });
+
+    // Small charts go in as their bounding boxes, in two turns. Where the search for a box size
+    // ended is a lower bound for the next box of that size, as the atlas only fills up: each
+    // size scans the atlas at most once in all, which keeps thousands of micro charts cheap.
+    const int64_t shapedArea = int64_t(side) * side / 1024;
+    std::unordered_map<uint32_t, std::pair<int, int>> boxCursor;  // (width << 16 | height) -> (y, x)
+
+    // The room the charts will take (boxes, or row spans) cannot exceed the atlas.
+    int64_t needed = 0;
+    for (uint32_t c = 0; c < charts; ++c) {
+        const ChartMask &m = masks.charts[c];
+        if (area(c) < shapedArea) {
+            needed += area(c);
+            continue;
+        }
+        const int16_t *l = m.rowLeft(masks.profiles), *r = m.rowRight(masks.profiles);
+        for (int y = 0; y < m.height; ++y)
+            needed += r[y] - l[y] + 1;
+    }
+    result.room = size_t(needed);
+    if (needed > int64_t(side) * side)
+        return result;
+
+    FreeRuns runs(side);
+    Shape shape, best;
+    for (uint32_t c : order) {
+        const bool box = area(c) < shapedArea;
+        int bestTop = INT32_MAX;
+        for (int turns = 0; turns < (allowTurns ? (box ? 2 : 4) : 1); ++turns) {
+            turnedShape(masks.charts[c], masks.profiles, turns, box, shape);
+            if (shape.width > side || shape.height > side)
+                continue;
+            int y = std::max(0, runs.firstRow(shape.length(shape.widestFirst[0])) - shape.widestFirst[0]), x = 0;
+            std::pair<int, int> *cursor = nullptr;
+            if (box) {
+                cursor = &boxCursor.try_emplace(uint32_t(shape.width) << 16 | uint32_t(shape.height), 0, 0).first->second;
+                if (cursor->first >= y)
+                    std::tie(y, x) = *cursor;
+            }
+            const bool found = lowestFit(runs, shape, side, bestTop, y, x);
+            if (cursor)  // nothing of this size fits before here, now or later
+                *cursor = {y, found ? x : 0};
+            if (found) {
+                bestTop = y + shape.height;
+                placements[c] = {x, y, turns};
+                std::swap(best, shape);
+            }
+        }
+        if (bestTop == INT32_MAX)
+            return result;
+        for (int r = 0; r < best.height; ++r)
+            result.placedRoom += size_t(best.length(r));
+        const ChartPlacement &p = placements[c];
+        for (int r = 0; r < best.height; ++r)
+            runs.take(p.y + r, p.x + best.left[size_t(r)], p.x + best.right[size_t(r)]);
+    }
+    result.fits = true;
+    return result;
+}
+
+}  // namespace voxelfair

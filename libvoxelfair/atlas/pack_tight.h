@@ -1,0 +1,30 @@
+// The default packer: bottom-left fill of the charts' rasterised shapes on the texel grid
+// (the packing of xatlas's brute-force mode and of Levy et al. 2002's "Tetris" family, made
+// fast enough for tens of thousands of charts).
+//
+// Charts go largest first. Each goes to the lowest row, then leftmost column, where its mask
+// fits among the charts already placed, holes between them included, trying the four quarter
+// turns and keeping the one whose top ends lowest. A chart's row is taken as the span between
+// its leftmost and rightmost texel. Charts smaller than 1/1024 of the texture (the paper's
+// "micro partitions", thousands on voxel models) go in as their bounding boxes, which lets the
+// search for each box size resume where the previous one stopped.
+#pragma once
+
+#include "atlas/chart_masks.h"
+
+#include <vector>
+
+namespace voxelfair {
+
+struct TightPacking {
+    bool fits = false;
+    // Texels the charts take in the atlas (their boxes, or their rows' spans): all of them, and
+    // those placed before one did not fit. A packing that misses tells how full it got.
+    size_t room = 0;
+    size_t placedRoom = 0;
+};
+
+// Packs into a side x side square (side <= 16383).
+TightPacking packTight(const ChartMasks &masks, int side, bool allowTurns, std::vector<ChartPlacement> &placements);
+
+}  // namespace voxelfair

@@ -1,0 +1,175 @@
+// Triangle rasterisation in texel space, shared by packing, baking and the measures so that all
+// of them agree on which texels a triangle touches.
+//
+// Texel (x, y) is the unit square [x, x+1] x [y, y+1] with y growing along v (up). Coordinates
+// are doubles: final UVs are floats in [0, 1] times a texture side, so every stage sees the same
+// numbers up to ~1e-4 texel, far below the margins used here.
+#pragma once
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/vec2.hpp>
+
+namespace voxelfair {
+
+// Twice the signed area; positive when a, b, c run counter-clockwise.
+inline double doubleArea(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
+    return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
+
+// Where the colour of a face is judged (atlas_measures.h) and guaranteed (bake.h): the incentre
+// of its UV triangle q (in texels) and the points halfway from it to each corner. Returns the
+// inradius (0 for a degenerate triangle, whose points are then not written).
+inline double faceInteriorPoints(const glm::dvec2 q[3], glm::dvec2 points[4]) {
+    const double a = glm::length(q[1] - q[2]), b = glm::length(q[2] - q[0]), c = glm::length(q[0] - q[1]);
+    const double perimeter = a + b + c;
+    if (!(perimeter > 0))
+        return 0;
+    const glm::dvec2 incentre = (q[0] * a + q[1] * b + q[2] * c) / perimeter;
+    points[0] = incentre;
+    for (int k = 0; k < 3; ++k)
+        points[k + 1] = (incentre + q[k]) / 2.0;
+    return std::abs(doubleArea(q[0], q[1], q[2])) / perimeter;
+}
+
+namespace raster_detail {
+struct Edge {
+    double ax, ay, ex, ey;
+    double at(double px, double py) const { return ex * (py - ay) - ey * (px - ax); }  // > 0 inside
+    double reach(double h) const { return h * (std::abs(ex) + std::abs(ey)); }
+    // Fill rule for points exactly on the edge: the top and left edges of a counter-clockwise
+    // triangle own them, so a point on an edge shared by two triangles is counted once.
+    bool topLeft() const { return ey < 0 || (ey == 0 && ex < 0); }
+};
+struct Setup {
+    Edge e[3];
+    double minX, minY, maxX, maxY;
+};
+// False for a triangle without area (nothing to rasterise).
+inline bool setup(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, Setup &s) {
+    const double area = doubleArea(a, b, c);
+    if (!(area != 0) || !std::isfinite(area))
+        return false;
+    if (area < 0)
+        std::swap(b, c);
+    const glm::dvec2 p[3] = {a, b, c};
+    for (int i = 0; i < 3; ++i) {
+        const glm::dvec2 &p0 = p[i], &p1 = p[(i + 1) % 3];
+        s.e[i] = {p0.x, p0.y, p1.x - p0.x, p1.y - p0.y};
+    }
+    s.minX = std::min({a.x, b.x, c.x});
+    s.maxX = std::max({a.x, b.x, c.x});
+    s.minY = std::min({a.y, b.y, c.y});
+    s.maxY = std::max({a.y, b.y, c.y});
+    return true;
+}
+inline int clampToInt(double v, int lo, int hi) { return int(std::clamp(v, double(lo), double(hi))); }
+
+// Rows y0..y1 of texels x0..x1: on each, the texels whose point (x + 0.5 + shift, y + 0.5)
+// satisfies edge i's inequality at(x, y) + reach[i] >= 0 for all three edges form one interval
+// (each inequality is a half-line in x). It is solved for, then its two ends are settled with
+// `inside`, the exact per-texel test, so the spans are exactly the texels that test accepts.
+template <class Inside, class VisitSpan>
+void spans(const Setup &s, const double reach[3], int x0, int x1, int y0, int y1, Inside &&inside,
+           VisitSpan &&visitSpan) {
+    for (int y = y0; y <= y1; ++y) {
+        const double cy = y + 0.5;
+        double lo = x0, hi = x1;
+        for (int i = 0; i < 3; ++i) {  // k * (x + 0.5) + m >= 0
+            const double k = -s.e[i].ey, m = s.e[i].at(0.0, cy) + reach[i];
+            if (k > 0)
+                lo = std::max(lo, std::ceil(-m / k - 0.5));
+            else if (k < 0)
+                hi = std::min(hi, std::floor(-m / k - 0.5));
+            else if (m < 0)
+                hi = lo - 1;
+        }
+        int xl = int(std::clamp(lo, double(x0), double(x1) + 1)), xr = int(std::clamp(hi, double(x0) - 1, double(x1)));
+        while (xl <= xr && !inside(xl, y))
+            ++xl;
+        while (xr >= xl && !inside(xr, y))
+            --xr;
+        if (xl > xr)  // rounding may have lost a one-texel span: look next to where it was
+            xr = xl - 1;
+        while (xl > x0 && inside(xl - 1, y))
+            --xl;
+        while (xr < x1 && inside(xr + 1, y))
+            ++xr;
+        if (xl <= xr)
+            visitSpan(y, xl, xr);
+    }
+}
+}  // namespace raster_detail
+
+// Calls visitSpan(y, x0, x1) for every row y with texels inside [0, width) x [0, height) whose
+// square, grown by `margin` on every side, meets the closed triangle: those are x0..x1. margin < 0
+// asks for an overlap of positive size (a square that only touches an edge is left out); margin
+// > 0 gives a safe superset. Near sharp corners the three half-plane tests keep a few squares
+// that only meet the bounding box: conservative, never missing a touched texel.
+template <class VisitSpan>
+void rasterConservativeSpans(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double margin, int width, int height,
+                             VisitSpan &&visitSpan) {
+    raster_detail::Setup s;
+    if (!raster_detail::setup(a, b, c, s))
+        return;
+    const int x0 = raster_detail::clampToInt(std::ceil(s.minX - 1 - margin), 0, width);
+    const int x1 = raster_detail::clampToInt(std::floor(s.maxX + margin), -1, width - 1);
+    const int y0 = raster_detail::clampToInt(std::ceil(s.minY - 1 - margin), 0, height);
+    const int y1 = raster_detail::clampToInt(std::floor(s.maxY + margin), -1, height - 1);
+    if (x0 > x1)
+        return;
+    const double h = 0.5 + margin;
+    const double reach[3] = {s.e[0].reach(h), s.e[1].reach(h), s.e[2].reach(h)};
+    auto inside = [&](int x, int y) {
+        const double cx = x + 0.5, cy = y + 0.5;
+        return s.e[0].at(cx, cy) + reach[0] >= 0 && s.e[1].at(cx, cy) + reach[1] >= 0 &&
+               s.e[2].at(cx, cy) + reach[2] >= 0;
+    };
+    raster_detail::spans(s, reach, x0, x1, y0, y1, inside, visitSpan);
+}
+
+// The same texels one by one: visit(x, y).
+template <class Visit>
+void rasterConservative(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double margin, int width, int height,
+                        Visit &&visit) {
+    rasterConservativeSpans(a, b, c, margin, width, height, [&](int y, int xl, int xr) {
+        for (int x = xl; x <= xr; ++x)
+            visit(x, y);
+    });
+}
+
+// Calls visit(x, y) for every texel inside [0, width) x [0, height) whose centre lies inside the
+// triangle; centres exactly on an edge follow the top-left rule, so the triangles of a planar,
+// non-overlapping mesh cover every centre at most once.
+template <class Visit>
+void rasterCentres(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, int width, int height, Visit &&visit) {
+    raster_detail::Setup s;
+    if (!raster_detail::setup(a, b, c, s))
+        return;
+    const int x0 = raster_detail::clampToInt(std::ceil(s.minX - 0.5), 0, width);
+    const int x1 = raster_detail::clampToInt(std::floor(s.maxX - 0.5), -1, width - 1);
+    const int y0 = raster_detail::clampToInt(std::ceil(s.minY - 0.5), 0, height);
+    const int y1 = raster_detail::clampToInt(std::floor(s.maxY - 0.5), -1, height - 1);
+    if (x0 > x1)
+        return;
+    const bool tl[3] = {s.e[0].topLeft(), s.e[1].topLeft(), s.e[2].topLeft()};
+    auto inside = [&](int x, int y) {
+        const double cx = x + 0.5, cy = y + 0.5;
+        for (int i = 0; i < 3; ++i) {
+            const double v = s.e[i].at(cx, cy);
+            if (!(v > 0 || (v == 0 && tl[i])))
+                return false;
+        }
+        return true;
+    };
+    const double reach[3] = {0, 0, 0};
+    raster_detail::spans(s, reach, x0, x1, y0, y1, inside, [&](int y, int xl, int xr) {
+        for (int x = xl; x <= xr; ++x)
+            visit(x, y);
+    });
+}
+
+}  // namespace voxelfair

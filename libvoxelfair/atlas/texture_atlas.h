@@ -1,0 +1,38 @@
+// Section 4.5 of the paper, "Texture atlas extraction", as one call: charts (charts.h), packing
+// (packing.h), baked diffuse texture (bake.h). Like xatlas the stages can also be run one by
+// one, e.g. to repack or rebake with other options without recomputing the charts.
+//
+//   AtlasMesh mesh;  mesh.positions = ...; mesh.triangles = ...; mesh.faceColours = ...;
+//   TextureAtlas atlas = buildTextureAtlas(mesh);
+//   if (atlas.status() != AtlasStatus::Ok) report(atlas.message());
+//   // atlas.layout.wedgeUv: 3 UVs per face; atlas.texture.rgba: the image, top row first.
+#pragma once
+
+#include "atlas/atlas_mesh.h"
+#include "atlas/bake.h"
+#include "atlas/charts.h"
+#include "atlas/packing.h"
+
+#include <string>
+
+namespace voxelfair {
+
+struct AtlasOptions {
+    ChartOptions charts;
+    PackOptions pack;
+    BakeOptions bake;
+};
+
+struct TextureAtlas {
+    AtlasCharts charts;
+    AtlasLayout layout;
+    AtlasTexture texture;
+
+    // The first failing stage's status and message (stages after a failure return empty).
+    AtlasStatus status() const { return texture.status; }
+    const std::string &message() const { return texture.message; }
+};
+
+TextureAtlas buildTextureAtlas(const AtlasMesh &mesh, const AtlasOptions &options = {});
+
+}  // namespace voxelfair

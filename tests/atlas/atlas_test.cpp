@@ -1,0 +1,592 @@
+// Section 4.5 texture atlas: charts, packing, bake and the measures, on families of meshes.
+#include "atlas/atlas_measures.h"
+#include "atlas/atlas_test_meshes.h"
+#include "atlas/edge_adjacency.h"
+#include "atlas/texel_raster.h"
+#include "atlas/texture_atlas.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <set>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+using namespace voxelfair;
+using namespace voxelfair::atlastest;
+
+namespace {
+
+TestMesh singleTriangle() {
+    TestMesh m;
+    m.name = "single triangle";
+    m.positions = {{0, 0, 0}, {3, 0, 0}, {0, 2, 1}};
+    m.triangles = {0, 1, 2};
+    m.faceColours = {{10, 20, 30}};
+    computeVertexColours(m);
+    return m;
+}
+
+// Two voxels touching along one edge: that edge is shared by four triangles.
+TestMesh edgeTouchingVoxels() {
+    TestMesh m = voxelSurface("two voxels sharing an edge", 2, 2, 1,
+                              [](int x, int y, int) { return (x == 0 && y == 0) || (x == 1 && y == 1); });
+    return m;
+}
+
+// A box plus faces without area: a repeated vertex, three collinear points, a coincident pair.
+TestMesh boxWithZeroAreaFaces() {
+    TestMesh m = voxelBox(3, 2, 2);
+    m.name = "box with zero-area faces";
+    const uint32_t mid = uint32_t(m.positions.size());
+    m.positions.push_back((m.positions[0] + m.positions[1]) * 0.5f);
+    const uint32_t twin = uint32_t(m.positions.size());
+    m.positions.push_back(m.positions[2]);
+    m.triangles.insert(m.triangles.end(), {0, 0, 1, 0, mid, 1, 2, twin, 3});
+    for (int i = 0; i < 3; ++i)
+        m.faceColours.push_back({uint8_t(50 * i), 200, 7});
+    computeVertexColours(m);
+    return m;
+}
+
+// A ramp winding 1.5 turns around the z axis (radii 3..5, rising 0.5 per radian): every face is
+// within a few degrees of +Z, yet the surface lies over itself.
+TestMesh helicalRamp() {
+    TestMesh m;
+    m.name = "helical ramp";
+    const int turnsSteps = 120, radialSteps = 4;
+    for (int i = 0; i <= turnsSteps; ++i)
+        for (int j = 0; j <= radialSteps; ++j) {
+            const float t = 3.0f * 3.14159265f * float(i) / turnsSteps, r = 3.0f + 2.0f * float(j) / radialSteps;
+            m.positions.push_back({r * std::cos(t), r * std::sin(t), 0.5f * t});
+        }
+    for (int i = 0; i < turnsSteps; ++i)
+        for (int j = 0; j < radialSteps; ++j) {
+            const uint32_t a = uint32_t(i * (radialSteps + 1) + j), b = a + uint32_t(radialSteps + 1);
+            // Counter-clockwise seen from above (+Z).
+            m.triangles.insert(m.triangles.end(), {a, a + 1, b + 1, a, b + 1, b});
+            m.faceColours.push_back(voxelColour(i, j, 0));
+            m.faceColours.push_back(voxelColour(i, j, 0));
+        }
+    computeVertexColours(m);
+    return m;
+}
+
+std::vector<TestMesh> families() {
+    std::vector<TestMesh> out;
+    out.push_back(voxelSphere(4));
+    out.push_back(smoothed(voxelSphere(6)));
+    out.push_back(smoothed(voxelSphere(12)));
+    out.push_back(voxelBox(5, 3, 2));
+    out.push_back(smoothed(voxelBox(6, 6, 6), 5));
+    out.push_back(smoothed(voxelTorus(8, 3)));
+    out.push_back(smoothed(voxelBlob(7, 1)));
+    out.push_back(smoothed(voxelBlob(9, 2), 3));
+    out.push_back(edgeTouchingVoxels());
+    out.push_back(boxWithZeroAreaFaces());
+    out.push_back(singleTriangle());
+    out.push_back(helicalRamp());
+    return out;
+}
+
+glm::dvec3 geometricNormal(const TestMesh &m, size_t f) {
+    const glm::dvec3 a = m.positions[m.triangles[3 * f]], b = m.positions[m.triangles[3 * f + 1]],
+                     c = m.positions[m.triangles[3 * f + 2]];
+    return glm::normalize(glm::cross(b - a, c - a));
+}
+
+// Everything an atlas must satisfy, whatever the mesh and options.
+void expectValidAtlas(const TestMesh &mesh, const AtlasCharts &charts, const AtlasLayout &layout, float cone) {
+    SCOPED_TRACE(mesh.name + ", " + toString(layout.mode));
+    ASSERT_EQ(layout.status, AtlasStatus::Ok) << layout.message;
+    ASSERT_EQ(layout.wedgeUv.size(), 3 * mesh.faceCount());
+    for (const glm::vec2 &uv : layout.wedgeUv) {
+        EXPECT_GE(uv.x, 0.0f);
+        EXPECT_LE(uv.x, 1.0f);
+        EXPECT_GE(uv.y, 0.0f);
+        EXPECT_LE(uv.y, 1.0f);
+    }
+    const AtlasMeasures m = measureAtlas(mesh.view(), charts, layout);
+    EXPECT_EQ(m.overlappingChartTexels, 0u);
+    EXPECT_EQ(m.overlappingCentres, 0u);
+    EXPECT_EQ(m.facesWithoutUvArea, 0u);
+    EXPECT_LE(m.maxStretch, 1.0 + 1e-3);
+    EXPECT_LE(m.maxInverseStretch, 1.0 / cone + 1e-3);
+    EXPECT_GT(m.packingEfficiency, 0.0);
+}
+
+}  // namespace
+
+TEST(TexelRaster, ConservativeCoverageOfAnAxisAlignedTriangle) {
+    std::set<std::pair<int, int>> got;
+    rasterConservative({1, 1}, {4, 1}, {1, 4}, -1.0 / 256, 8, 8, [&](int x, int y) { got.insert({x, y}); });
+    // Texels meeting the triangle with positive area: the lower-left staircase, diagonal included.
+    const std::set<std::pair<int, int>> want = {{1, 1}, {2, 1}, {3, 1}, {1, 2}, {2, 2}, {1, 3}};
+    EXPECT_EQ(got, want);
+    got.clear();
+    rasterConservative({1, 1}, {4, 1}, {1, 4}, +1.0 / 256, 8, 8, [&](int x, int y) { got.insert({x, y}); });
+    EXPECT_GT(got.size(), want.size());  // a positive margin also takes the touching texels
+}
+
+TEST(TexelRaster, SpansMatchTheTexelByTexelDefinition) {
+    // The definition: the texel square grown by the margin meets the closed triangle, tested as
+    // the triangle's box and its three edge half-planes.
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> coord(-3, 40);
+    for (int trial = 0; trial < 2000; ++trial) {
+        glm::dvec2 p[3] = {{coord(rng), coord(rng)}, {coord(rng), coord(rng)}, {coord(rng), coord(rng)}};
+        if (trial % 3 == 0)  // small triangles with vertices on texel corners
+            for (glm::dvec2 &q : p)
+                q = glm::floor(p[0]) + glm::floor(q / 8.0);
+        if (trial % 3 == 1)  // vertices on texel centres: edges through centres, the top-left rule's case
+            for (glm::dvec2 &q : p)
+                q = glm::floor(q / 4.0) + 0.5;
+        if (doubleArea(p[0], p[1], p[2]) < 0)
+            std::swap(p[1], p[2]);
+        if (doubleArea(p[0], p[1], p[2]) == 0)
+            continue;
+        const double margin = trial % 2 ? 1.0 / 256 : -1.0 / 256;
+        std::set<std::pair<int, int>> spans, reference;
+        rasterConservative(p[0], p[1], p[2], margin, 37, 37, [&](int x, int y) { spans.insert({x, y}); });
+        const glm::dvec2 lo = glm::min(p[0], glm::min(p[1], p[2])), hi = glm::max(p[0], glm::max(p[1], p[2]));
+        for (int y = 0; y < 37; ++y)
+            for (int x = 0; x < 37; ++x) {
+                if (x + 1 + margin < lo.x || x - margin > hi.x || y + 1 + margin < lo.y || y - margin > hi.y)
+                    continue;
+                bool in = true;
+                for (int i = 0; i < 3; ++i) {
+                    const glm::dvec2 a = p[i], e = p[(i + 1) % 3] - p[i];
+                    const double at = e.x * (y + 0.5 - a.y) - e.y * (x + 0.5 - a.x);
+                    in = in && at + (0.5 + margin) * (std::abs(e.x) + std::abs(e.y)) >= 0;
+                }
+                if (in)
+                    reference.insert({x, y});
+            }
+        ASSERT_EQ(spans, reference) << "trial " << trial;
+
+        // Centres: strictly inside, or on a top or left edge.
+        std::set<std::pair<int, int>> centres, centreReference;
+        rasterCentres(p[0], p[1], p[2], 37, 37, [&](int x, int y) { centres.insert({x, y}); });
+        for (int y = 0; y < 37; ++y)
+            for (int x = 0; x < 37; ++x) {
+                bool in = true;
+                for (int i = 0; i < 3; ++i) {
+                    const glm::dvec2 a = p[i], e = p[(i + 1) % 3] - p[i];
+                    const double at = e.x * (y + 0.5 - a.y) - e.y * (x + 0.5 - a.x);
+                    in = in && (at > 0 || (at == 0 && (e.y < 0 || (e.y == 0 && e.x < 0))));
+                }
+                if (in)
+                    centreReference.insert({x, y});
+            }
+        ASSERT_EQ(centres, centreReference) << "trial " << trial;
+    }
+}
+
+TEST(TexelRaster, TopLeftRuleCoversEachCentreOnce) {
+    // A square split along its diagonal, which passes through texel centres.
+    std::vector<int> count(64, 0);
+    auto add = [&](int x, int y) { ++count[size_t(y) * 8 + x]; };
+    rasterCentres({0.5, 0.5}, {6.5, 0.5}, {6.5, 6.5}, 8, 8, add);
+    rasterCentres({0.5, 0.5}, {6.5, 6.5}, {0.5, 6.5}, 8, 8, add);
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x)
+            // Centres on the square's left and top edges count, on its right and bottom not.
+            EXPECT_EQ(count[size_t(y) * 8 + x], x <= 5 && y >= 1 && y <= 6 ? 1 : 0) << x << "," << y;
+}
+
+TEST(EdgeAdjacency, ClosedManifoldOpenAndNonManifold) {
+    const TestMesh box = voxelBox(2, 2, 2);
+    EdgeAdjacency a = buildEdgeAdjacency(box.triangles.data(), box.faceCount(), box.positions.size());
+    EXPECT_EQ(a.borderEdges, 0u);
+    EXPECT_EQ(a.nonManifoldEdges, 0u);
+    for (size_t h = 0; h < a.opposite.size(); ++h) {
+        ASSERT_NE(a.opposite[h], kNoOpposite);
+        EXPECT_EQ(a.opposite[a.opposite[h]], h);
+    }
+    const TestMesh tri = singleTriangle();
+    a = buildEdgeAdjacency(tri.triangles.data(), 1, 3);
+    EXPECT_EQ(a.borderEdges, 3u);
+    const TestMesh touching = edgeTouchingVoxels();
+    a = buildEdgeAdjacency(touching.triangles.data(), touching.faceCount(), touching.positions.size());
+    EXPECT_EQ(a.nonManifoldEdges, 1u);
+}
+
+TEST(Charts, FollowSection45OnEveryFamily) {
+    for (float cone : {0.7f, 0.5f}) {
+        for (const TestMesh &mesh : families()) {
+            SCOPED_TRACE(mesh.name + " cone " + std::to_string(cone));
+            ChartOptions options;
+            options.minSeedCosine = cone;
+            const AtlasCharts charts = computeCharts(mesh.view(), options);
+            ASSERT_EQ(charts.status, AtlasStatus::Ok);
+            ASSERT_EQ(charts.chartFaces.size(), mesh.faceCount());
+            float lastPriority = 2;
+            for (size_t c = 0; c < charts.chartCount(); ++c) {
+                const uint32_t first = charts.chartFirstFace[c], end = charts.chartFirstFace[c + 1];
+                ASSERT_LT(first, end);
+                if (charts.isDegenerate(c)) {
+                    EXPECT_EQ(end - first, 1u);
+                    continue;
+                }
+                // Seeds come most axis-aligned first.
+                const glm::vec3 axis = charts.chartAxis[c];
+                const float priority = std::max({std::abs(axis.x), std::abs(axis.y), std::abs(axis.z)});
+                EXPECT_LE(priority, lastPriority);
+                lastPriority = priority;
+                EXPECT_GT(glm::dot(glm::dvec3(axis), geometricNormal(mesh, charts.chartFaces[first])), 1 - 1e-6);
+                // Every face within the seed's cone; the chart edge-connected.
+                std::set<std::pair<uint32_t, uint32_t>> edges;
+                for (uint32_t i = first; i < end; ++i) {
+                    const uint32_t f = charts.chartFaces[i];
+                    EXPECT_EQ(charts.faceChart[f], c);
+                    EXPECT_GE(glm::dot(glm::dvec3(axis), geometricNormal(mesh, f)), cone - 1e-6);
+                    bool touches = i == first;
+                    for (int k = 0; k < 3; ++k) {
+                        uint32_t a = mesh.triangles[3 * f + k], b = mesh.triangles[3 * f + (k + 1) % 3];
+                        if (a > b)
+                            std::swap(a, b);
+                        touches = touches || edges.count({a, b});
+                    }
+                    EXPECT_TRUE(touches) << "face " << f << " is not next to an earlier face of chart " << c;
+                    for (int k = 0; k < 3; ++k) {
+                        uint32_t a = mesh.triangles[3 * f + k], b = mesh.triangles[3 * f + (k + 1) % 3];
+                        edges.insert({std::min(a, b), std::max(a, b)});
+                    }
+                }
+            }
+        }
+    }
+}
+
+TEST(Charts, RawVoxelSurfacesSplitIntoPlanarRegions) {
+    const TestMesh box = voxelBox(4, 3, 2);
+    const AtlasCharts charts = computeCharts(box.view());
+    EXPECT_EQ(charts.chartCount(), 6u);  // one per side of the box
+    const TestMesh sphere = voxelSphere(6);
+    const AtlasCharts sc = computeCharts(sphere.view());
+    for (size_t f = 0; f < sphere.faceCount(); ++f)
+        EXPECT_EQ(glm::vec3(geometricNormal(sphere, f)), sc.chartAxis[sc.faceChart[f]]);
+}
+
+TEST(Charts, AChartWindingOverItselfIsCutBack) {
+    const TestMesh ramp = helicalRamp();
+    const AtlasCharts charts = computeCharts(ramp.view());
+    EXPECT_GT(charts.foldedCharts, 0u);
+    EXPECT_GE(charts.chartCount(), 2u);
+    const AtlasLayout layout = packCharts(charts);
+    expectValidAtlas(ramp, charts, layout, 0.7f);  // includes: no texel centre under two faces
+}
+
+TEST(Charts, UnsharedCornersAreMatchedByPosition) {
+    const TestMesh welded = smoothed(voxelSphere(6));
+    TestMesh loose = welded;  // three vertices of its own per triangle, as in an STL file
+    loose.positions.clear();
+    loose.triangles.clear();
+    for (uint32_t v : welded.triangles) {
+        loose.triangles.push_back(uint32_t(loose.positions.size()));
+        loose.positions.push_back(welded.positions[v]);
+    }
+    computeVertexColours(loose);
+    const AtlasCharts a = computeCharts(welded.view()), b = computeCharts(loose.view());
+    EXPECT_FALSE(a.weldedByPosition);
+    EXPECT_TRUE(b.weldedByPosition);
+    EXPECT_EQ(a.faceChart, b.faceChart);
+    expectValidAtlas(loose, b, packCharts(b), 0.7f);
+}
+
+TEST(Charts, WiderConeGivesFewerCharts) {
+    const TestMesh sphere = smoothed(voxelSphere(12));
+    ChartOptions paperText;
+    paperText.minSeedCosine = 0.5f;  // the paper's 60 degrees
+    EXPECT_LT(computeCharts(sphere.view(), paperText).chartCount(), computeCharts(sphere.view()).chartCount());
+}
+
+TEST(Charts, DegenerateAndNonFiniteFacesGetTheirOwnTinyCharts) {
+    TestMesh mesh = boxWithZeroAreaFaces();
+    mesh.positions.push_back({std::numeric_limits<float>::quiet_NaN(), 0, 0});
+    mesh.triangles.insert(mesh.triangles.end(), {0, 1, uint32_t(mesh.positions.size() - 1)});
+    mesh.faceColours.push_back({1, 2, 3});
+    const AtlasCharts charts = computeCharts(mesh.view(false, false));
+    ASSERT_EQ(charts.status, AtlasStatus::Ok);
+    EXPECT_EQ(charts.degenerateFaces, 4u);
+    EXPECT_EQ(charts.nonFiniteFaces, 1u);
+    for (size_t f = mesh.faceCount() - 4; f < mesh.faceCount(); ++f)
+        EXPECT_TRUE(charts.isDegenerate(charts.faceChart[f]));
+    const AtlasLayout layout = packCharts(charts);
+    ASSERT_EQ(layout.status, AtlasStatus::Ok);
+    EXPECT_EQ(measureAtlas(mesh.view(), charts, layout).facesWithoutUvArea, 0u);
+}
+
+TEST(Charts, GivenNormalsDriveTheConeButNeverFoldAFace) {
+    const TestMesh sphere = smoothed(voxelSphere(8));
+    std::vector<glm::vec3> normals(sphere.faceCount());
+    for (size_t f = 0; f < normals.size(); ++f)
+        normals[f] = glm::vec3(geometricNormal(sphere, f)) * 3.0f;  // any length
+    normals[5] = -normals[5];                                       // unusable: ignored
+    normals[7] = glm::vec3(0.0f);
+    AtlasMesh view = sphere.view();
+    view.faceNormals = normals.data();
+    const AtlasCharts given = computeCharts(view);
+    EXPECT_EQ(given.ignoredNormals, 2u);
+    expectValidAtlas(sphere, given, packCharts(given), 0.7f);
+
+    // Normals snapped to the nearest axis where that stays in the face's cone: other seeds and
+    // cones, yet the geometric test keeps every face within the stretch bound.
+    for (size_t f = 0; f < normals.size(); ++f) {
+        const glm::dvec3 n = geometricNormal(sphere, f);
+        const int axis = std::abs(n.x) >= std::max(std::abs(n.y), std::abs(n.z)) ? 0 : std::abs(n.y) >= std::abs(n.z) ? 1 : 2;
+        glm::vec3 snapped(0.0f);
+        snapped[axis] = n[axis] > 0 ? 1.0f : -1.0f;
+        normals[f] = std::abs(n[axis]) >= 0.75 ? snapped : glm::vec3(n);
+    }
+    const AtlasCharts snapped = computeCharts(view);
+    EXPECT_EQ(snapped.ignoredNormals, 0u);
+    EXPECT_NE(snapped.faceChart, computeCharts(sphere.view()).faceChart);
+    expectValidAtlas(sphere, snapped, packCharts(snapped), 0.7f);
+}
+
+TEST(Packing, EveryFamilyEveryModeIsValid) {
+    for (const TestMesh &mesh : families())
+        for (PackMode mode : {PackMode::Paper, PackMode::Tight}) {
+            const AtlasCharts charts = computeCharts(mesh.view());
+            PackOptions density;
+            density.mode = mode;
+            density.texelsPerUnit = 8;
+            const AtlasLayout byDensity = packCharts(charts, density);
+            expectValidAtlas(mesh, charts, byDensity, 0.7f);
+            EXPECT_FALSE(byDensity.densityReduced);
+            EXPECT_EQ(byDensity.texelsPerUnit, 8.0);
+            EXPECT_EQ(byDensity.size & (byDensity.size - 1), 0) << "not a power of two: " << byDensity.size;
+
+            PackOptions fixed = density;
+            fixed.textureSize = 256;
+            const AtlasLayout bySize = packCharts(charts, fixed);
+            expectValidAtlas(mesh, charts, bySize, 0.7f);
+            EXPECT_EQ(bySize.size, 256);
+        }
+}
+
+TEST(Packing, WiderConeKeepsItsStretchBound) {
+    const TestMesh mesh = smoothed(voxelBlob(9, 3));
+    ChartOptions options;
+    options.minSeedCosine = 0.5f;
+    const AtlasCharts charts = computeCharts(mesh.view(), options);
+    expectValidAtlas(mesh, charts, packCharts(charts), 0.5f);
+}
+
+TEST(Packing, StretchIsOneOverTheCosineToTheSeed) {
+    // A hinge at 30 degrees: one chart (cos 30 >= 0.7); the second face is shrunk by cos 30.
+    TestMesh m;
+    m.name = "hinge";
+    const float s = std::sin(0.5236f), c = std::cos(0.5236f);
+    m.positions = {{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {2, 2, 0}, {2 + 2 * c, 2, 2 * s}};
+    m.triangles = {0, 1, 3, 0, 3, 2, 1, 4, 3};
+    m.faceColours = {{1, 1, 1}, {2, 2, 2}, {3, 3, 3}};
+    const AtlasCharts charts = computeCharts(m.view());
+    ASSERT_EQ(charts.chartCount(), 1u);
+    const AtlasMeasures measures = measureAtlas(m.view(), charts, packCharts(charts));
+    EXPECT_NEAR(measures.maxStretch, 1.0, 1e-4);
+    EXPECT_NEAR(measures.maxInverseStretch, 1.0 / c, 1e-4);
+}
+
+TEST(Packing, TightFillsTheReferenceSphereBeyondSeventyPercent) {
+    // The project's reference: a Taubin-smoothed voxel sphere of radius 20 in 1024^2.
+    const TestMesh sphere = smoothed(voxelSphere(20));
+    const AtlasCharts charts = computeCharts(sphere.view());
+    PackOptions tight;
+    tight.textureSize = 1024;
+    const AtlasLayout layout = packCharts(charts, tight);
+    const AtlasMeasures m = measureAtlas(sphere.view(), charts, layout);
+    EXPECT_GE(m.packingEfficiency, 0.70);
+    EXPECT_EQ(m.overlappingChartTexels, 0u);
+    PackOptions paper = tight;
+    paper.mode = PackMode::Paper;
+    const AtlasLayout paperLayout = packCharts(charts, paper);
+    EXPECT_LT(measureAtlas(sphere.view(), charts, paperLayout).packingEfficiency, m.packingEfficiency);
+    EXPECT_LT(paperLayout.texelsPerUnit, layout.texelsPerUnit);
+}
+
+TEST(Packing, PaperSquareIsCentred) {
+    const TestMesh mesh = smoothed(voxelSphere(8));
+    const AtlasCharts charts = computeCharts(mesh.view());
+    PackOptions paper;
+    paper.mode = PackMode::Paper;
+    paper.textureSize = 512;
+    const AtlasLayout layout = packCharts(charts, paper);
+    ASSERT_EQ(layout.status, AtlasStatus::Ok);
+    glm::vec2 lo(1), hi(0);
+    for (const glm::vec2 &uv : layout.wedgeUv)
+        lo = glm::min(lo, uv), hi = glm::max(hi, uv);
+    const glm::vec2 margin = lo + hi - 1.0f;  // 0 when centred
+    EXPECT_NEAR(margin.x, 0.0f, 8.0f / 512);
+    EXPECT_NEAR(margin.y, 0.0f, 8.0f / 512);
+}
+
+TEST(Packing, DensityIsLoweredToFitTheLargestTexture) {
+    const TestMesh mesh = smoothed(voxelSphere(10));
+    const AtlasCharts charts = computeCharts(mesh.view());
+    PackOptions options;
+    options.texelsPerUnit = 64;
+    options.maxTextureSize = 256;
+    const AtlasLayout layout = packCharts(charts, options);
+    expectValidAtlas(mesh, charts, layout, 0.7f);
+    EXPECT_TRUE(layout.densityReduced);
+    EXPECT_FALSE(layout.message.empty());
+    EXPECT_EQ(layout.size, 256);
+    EXPECT_LT(layout.texelsPerUnit, 64.0);
+}
+
+TEST(Packing, IsDeterministic) {
+    const TestMesh mesh = smoothed(voxelBlob(8, 5));
+    const AtlasCharts charts = computeCharts(mesh.view());
+    EXPECT_EQ(packCharts(charts).wedgeUv, packCharts(charts).wedgeUv);
+}
+
+TEST(Bake, CrispColoursSurviveNearestAndBilinearSampling) {
+    for (const TestMesh &mesh : families()) {
+        SCOPED_TRACE(mesh.name);
+        AtlasOptions options;
+        options.pack.texelsPerUnit = 16;
+        const TextureAtlas atlas = buildTextureAtlas(mesh.view(), options);
+        ASSERT_EQ(atlas.status(), AtlasStatus::Ok) << atlas.message();
+        EXPECT_EQ(atlas.texture.source, BakeSource::FaceColours);
+        const ColourFidelity f = measureColourFidelity(mesh.view(), atlas.layout, atlas.texture);
+        EXPECT_EQ(f.guaranteedNearestMatches, f.guaranteedNearest);
+        EXPECT_EQ(f.guaranteedBilinearMatches, f.guaranteedBilinear);
+        // At 16 texels per voxel even the faces Taubin shrinks most keep their colour under
+        // nearest sampling; bilinear filtering may blend in a neighbour on a few of them (and on
+        // the ramp's thin faces, which are not voxel faces).
+        EXPECT_EQ(f.nearestMatches, f.samples);
+        if (mesh.name != "helical ramp") {
+            EXPECT_GE(f.bilinear(), 0.99);
+        }
+    }
+}
+
+TEST(Bake, DilationFillsExactlyTheRequestedRings) {
+    const TestMesh mesh = smoothed(voxelSphere(6));
+    for (int rings : {1, 2, 3}) {
+        AtlasOptions options;
+        options.pack.gutter = 2 * rings;
+        options.bake.dilation = rings;
+        const TextureAtlas atlas = buildTextureAtlas(mesh.view(), options);
+        ASSERT_EQ(atlas.status(), AtlasStatus::Ok);
+        const int size = atlas.texture.size;
+        std::vector<uint8_t> covered(size_t(size) * size, 0);
+        for (size_t f = 0; f < mesh.faceCount(); ++f) {
+            glm::dvec2 q[3];
+            for (int k = 0; k < 3; ++k)
+                q[k] = glm::dvec2(atlas.layout.wedgeUv[3 * f + k]) * double(size);
+            rasterConservative(q[0], q[1], q[2], -1.0 / 256, size, size,
+                               [&](int x, int y) { covered[size_t(y) * size + x] = 1; });
+        }
+        for (int y = 0; y < size; ++y)
+            for (int x = 0; x < size; ++x) {
+                int distance = INT32_MAX;  // Chebyshev distance to the nearest covered texel
+                for (int dy = -rings - 1; dy <= rings + 1; ++dy)
+                    for (int dx = -rings - 1; dx <= rings + 1; ++dx) {
+                        const int u = x + dx, v = y + dy;
+                        if (u >= 0 && v >= 0 && u < size && v < size && covered[size_t(v) * size + u])
+                            distance = std::min(distance, std::max(std::abs(dx), std::abs(dy)));
+                    }
+                const uint8_t alpha = atlas.texture.texel(x, y).a;
+                ASSERT_EQ(alpha, distance <= rings ? 255 : 0) << x << "," << y << " at distance " << distance;
+            }
+    }
+}
+
+TEST(Bake, GouraudStaysBetweenTheVertexColours) {
+    const TestMesh mesh = smoothed(voxelSphere(6));
+    AtlasOptions options;
+    options.bake.source = BakeSource::VertexColours;
+    options.pack.texelsPerUnit = 8;
+    const TextureAtlas atlas = buildTextureAtlas(mesh.view(), options);
+    ASSERT_EQ(atlas.status(), AtlasStatus::Ok);
+    EXPECT_EQ(atlas.texture.source, BakeSource::VertexColours);
+    const int size = atlas.texture.size;
+    for (size_t f = 0; f < mesh.faceCount(); ++f) {
+        glm::dvec2 q[3];
+        glm::ivec3 lo(255), hi(0);
+        for (int k = 0; k < 3; ++k) {
+            q[k] = glm::dvec2(atlas.layout.wedgeUv[3 * f + k]) * double(size);
+            const glm::ivec3 c = glm::ivec3(mesh.vertexColours[mesh.triangles[3 * f + k]]);
+            lo = glm::min(lo, c), hi = glm::max(hi, c);
+        }
+        rasterCentres(q[0], q[1], q[2], size, size, [&](int x, int y) {
+            const glm::ivec3 t = glm::ivec3(glm::u8vec3(atlas.texture.texel(x, y)));
+            EXPECT_TRUE(glm::all(glm::greaterThanEqual(t, lo - 1)) && glm::all(glm::lessThanEqual(t, hi + 1)));
+        });
+    }
+}
+
+TEST(Bake, FallsBackWhenColoursAreMissing) {
+    const TestMesh mesh = voxelBox(2, 2, 2);
+    AtlasTexture t = buildTextureAtlas(mesh.view(false, true)).texture;
+    EXPECT_EQ(t.source, BakeSource::VertexColours);
+    EXPECT_FALSE(t.note.empty());
+    AtlasOptions gouraud;
+    gouraud.bake.source = BakeSource::VertexColours;
+    t = buildTextureAtlas(mesh.view(true, false), gouraud).texture;
+    EXPECT_EQ(t.source, BakeSource::FaceColours);
+    t = buildTextureAtlas(mesh.view(false, false)).texture;
+    EXPECT_EQ(t.source, BakeSource::FlatColour);
+    EXPECT_FALSE(t.note.empty());
+    size_t opaque = 0;
+    for (int y = 0; y < t.size; ++y)
+        for (int x = 0; x < t.size; ++x)
+            if (t.texel(x, y).a == 255) {
+                ++opaque;
+                EXPECT_EQ(glm::u8vec3(t.texel(x, y)), BakeOptions().flatColour);
+            }
+    EXPECT_GT(opaque, 0u);
+}
+
+TEST(BadInput, EmptyInvalidAndImpossibleRequestsGiveMessagesNotCrashes) {
+    AtlasMesh empty;
+    TextureAtlas atlas = buildTextureAtlas(empty);
+    EXPECT_EQ(atlas.status(), AtlasStatus::EmptyMesh);
+    EXPECT_FALSE(atlas.message().empty());
+    EXPECT_TRUE(atlas.layout.wedgeUv.empty());
+    EXPECT_TRUE(atlas.texture.rgba.empty());
+
+    const TestMesh box = voxelBox(2, 1, 1);
+    AtlasMesh noPositions = box.view();
+    noPositions.positions = nullptr;
+    EXPECT_EQ(buildTextureAtlas(noPositions).status(), AtlasStatus::InvalidInput);
+
+    std::vector<uint32_t> bad = box.triangles;
+    bad[4] = 999;
+    AtlasMesh outOfRange = box.view();
+    outOfRange.triangles = bad.data();
+    atlas = buildTextureAtlas(outOfRange);
+    EXPECT_EQ(atlas.status(), AtlasStatus::InvalidInput);
+    EXPECT_NE(atlas.message().find("999"), std::string::npos) << atlas.message();
+
+    const AtlasCharts charts = computeCharts(box.view());
+    for (float density : {0.0f, -1.0f, std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {
+        PackOptions options;
+        options.texelsPerUnit = density;
+        const AtlasLayout layout = packCharts(charts, options);
+        EXPECT_EQ(layout.status, AtlasStatus::InvalidInput);
+        EXPECT_FALSE(layout.message.empty());
+    }
+    // Thousands of charts cannot fit 8 x 8 texels at any density.
+    const TestMesh sphere = voxelSphere(10);
+    PackOptions tiny;
+    tiny.textureSize = 8;
+    const AtlasLayout layout = packCharts(computeCharts(sphere.view()), tiny);
+    EXPECT_EQ(layout.status, AtlasStatus::InvalidInput);
+    EXPECT_FALSE(layout.message.empty());
+    const AtlasTexture texture = bakeTexture(sphere.view(), layout);
+    EXPECT_NE(texture.status, AtlasStatus::Ok);
+}
+
+TEST(BadInput, NonManifoldEdgesAreChartBorders) {
+    const TestMesh mesh = edgeTouchingVoxels();
+    const AtlasCharts charts = computeCharts(mesh.view());
+    EXPECT_EQ(charts.nonManifoldEdges, 1u);
+    expectValidAtlas(mesh, charts, packCharts(charts), 0.7f);
+}

@@ -1,0 +1,190 @@
+// Prints the measures of the section 4.5 texture atlas on test meshes, both packers:
+// packing efficiency, overlaps, UV areas, stretch, crisp colour fidelity and timings.
+//
+//   atlas_report                  the reference mesh: Taubin-smoothed voxel sphere r 20, 1024^2
+//   atlas_report --all            also boxes, a torus, blobs, raw voxel spheres
+//   atlas_report --models         also real VXL models from ../shared/models (sections side by
+//                                 side, boundary quads of section 4.2, Taubin-smoothed)
+//   atlas_report --ppm DIR        also writes each texture as DIR/<mesh>_<mode>.ppm
+//   atlas_report --gutter N       texels between charts (default 4; the bake fills N/2 of them)
+#include "atlas/atlas_measures.h"
+#include "atlas/texture_atlas.h"
+#include "atlas/atlas_test_meshes.h"
+
+#ifdef VOXELFAIR_ATLAS_REPORT_MODELS
+#include "extraction/boundary_surface.h"
+#include "formats/file_bytes.h"
+#include "formats/format_error.h"
+#include "formats/palette.h"
+#include "formats/vxl.h"
+#endif
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+using namespace voxelfair;
+using namespace voxelfair::atlastest;
+
+namespace {
+
+double msSince(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void writePpm(const std::string &path, const AtlasTexture &t) {
+    FILE *f = std::fopen(path.c_str(), "wb");
+    if (!f)
+        return;
+    std::fprintf(f, "P6\n%d %d\n255\n", t.size, t.size);
+    for (size_t i = 0; i < t.rgba.size(); i += 4)
+        std::fwrite(&t.rgba[i], 1, 3, f);
+    std::fclose(f);
+}
+
+int gutter = PackOptions().gutter;
+
+void report(const TestMesh &mesh, int textureSize, float texelsPerUnit, const char *ppmDir) {
+    const AtlasMesh view = mesh.view();
+    auto t0 = std::chrono::steady_clock::now();
+    const AtlasCharts charts = computeCharts(view);
+    const double chartMs = msSince(t0);
+    size_t degenerateCharts = 0;
+    for (size_t c = 0; c < charts.chartCount(); ++c)
+        degenerateCharts += charts.isDegenerate(c);
+    std::printf("\n%s: %zu faces, %zu charts (%zu degenerate faces), %zu non-manifold edges, charts %.1f ms\n",
+                mesh.name.c_str(), mesh.faceCount(), charts.chartCount(), degenerateCharts, charts.nonManifoldEdges,
+                chartMs);
+    std::printf("  %-8s %6s %8s %7s %6s %6s %8s %8s %9s %9s %7s %7s %8s %8s\n", "mode", "size", "texel/u", "eff%",
+                "ctr%", "over", "overCtr", "noArea", "maxStr", "max1/cos", "near%", "bilin%", "pack ms", "bake ms");
+    for (PackMode mode : {PackMode::Paper, PackMode::Tight}) {
+        PackOptions pack;
+        pack.mode = mode;
+        pack.textureSize = textureSize;
+        pack.texelsPerUnit = texelsPerUnit;
+        pack.gutter = gutter;
+        t0 = std::chrono::steady_clock::now();
+        const AtlasLayout layout = packCharts(charts, pack);
+        const double packMs = msSince(t0);
+        t0 = std::chrono::steady_clock::now();
+        const AtlasTexture texture = bakeTexture(view, layout);
+        const double bakeMs = msSince(t0);
+        if (layout.status != AtlasStatus::Ok) {
+            std::printf("  %-8s failed: %s\n", toString(mode), layout.message.c_str());
+            continue;
+        }
+        const AtlasMeasures m = measureAtlas(view, charts, layout);
+        const ColourFidelity fid = measureColourFidelity(view, layout, texture);
+        std::printf("  %-8s %6d %8.3f %7.2f %6.2f %6zu %8zu %8zu %9.5f %9.4f %7.3f %7.3f %8.1f %8.1f\n",
+                    toString(mode), layout.size, layout.texelsPerUnit, 100 * m.packingEfficiency,
+                    100 * m.centreEfficiency, m.overlappingChartTexels, m.overlappingCentres, m.facesWithoutUvArea,
+                    m.maxStretch, m.maxInverseStretch, 100 * fid.nearest(), 100 * fid.bilinear(), packMs, bakeMs);
+        std::printf("           packings tried %zu, min UV inradius %.2f texels, guaranteed faces' samples: "
+                    "nearest %zu/%zu, bilinear %zu/%zu, mean 1/cos %.4f\n",
+                    layout.packAttempts, fid.minInradius, fid.guaranteedNearestMatches, fid.guaranteedNearest,
+                    fid.guaranteedBilinearMatches, fid.guaranteedBilinear, m.meanInverseStretch);
+        if (ppmDir) {
+            std::string name = mesh.name + "_" + toString(mode) + ".ppm";
+            for (char &ch : name)
+                if (ch == ' ' || ch == '/')
+                    ch = '_';
+            writePpm(std::string(ppmDir) + "/" + name, texture);
+        }
+    }
+}
+
+#ifdef VOXELFAIR_ATLAS_REPORT_MODELS
+// A VXL model as one mesh: each section's boundary quads (section 4.2), split along a-c, placed
+// side by side along x, coloured from the embedded palette (the Red Alert 2 unit palette when
+// the file's is all zeros), then smoothed like MeshLab's Taubin filter.
+bool loadVxl(const std::string &name, TestMesh &mesh) {
+    const std::string dir = VOXELFAIR_MODELS_DIR;
+    try {
+        const std::vector<uint8_t> bytes = readFileBytes(dir + "/vxl/" + name + ".vxl");
+        const VxlModel model = readVxl(bytes.data(), bytes.size());
+        Palette palette = model.embeddedPalette;
+        if (palette.allZero()) {
+            const std::vector<uint8_t> pal = readFileBytes(dir + "/pal/ra2_unittem.pal");
+            palette = readPal(pal.data(), pal.size());
+        }
+        mesh = TestMesh{};
+        mesh.name = name + ".vxl";
+        float offset = 0;
+        for (const VxlSection &section : model.sections) {
+            const BoundarySurface surface = extractBoundarySurface(section.volume);
+            const uint32_t base = uint32_t(mesh.positions.size());
+            for (const glm::vec3 &p : surface.positions)
+                mesh.positions.push_back(p + glm::vec3(offset, 0, 0));
+            for (size_t q = 0; q < surface.quadCount(); ++q) {
+                const uint32_t *v = &surface.quads[4 * q];
+                mesh.triangles.insert(mesh.triangles.end(),
+                                      {base + v[0], base + v[1], base + v[2], base + v[0], base + v[2], base + v[3]});
+                const Rgb c = palette.colours[surface.quadVoxels[q].colour];
+                mesh.faceColours.insert(mesh.faceColours.end(), 2, glm::u8vec3(c.r, c.g, c.b));
+            }
+            offset += float(section.volume.sizeX) + 4;
+        }
+        computeVertexColours(mesh);
+        taubinSmooth(mesh);
+        mesh.name += " taubin10";
+        return !mesh.triangles.empty();
+    } catch (const std::exception &e) {
+        std::printf("\n%s: skipped (%s; models folder %s)\n", name.c_str(), e.what(), dir.c_str());
+        return false;
+    }
+}
+#endif
+
+}  // namespace
+
+int main(int argc, char **argv) {
+    bool all = false, models = false;
+    const char *ppmDir = nullptr;
+    for (int i = 1; i < argc; ++i) {
+        if (!std::strcmp(argv[i], "--all"))
+            all = true;
+        else if (!std::strcmp(argv[i], "--models"))
+            models = true;
+        else if (!std::strcmp(argv[i], "--ppm") && i + 1 < argc)
+            ppmDir = argv[++i];
+        else if (!std::strcmp(argv[i], "--gutter") && i + 1 < argc)
+            gutter = std::atoi(argv[++i]);
+        else {
+            std::fprintf(stderr, "usage: %s [--all] [--models] [--ppm DIR] [--gutter N]\n", argv[0]);
+            return 2;
+        }
+    }
+    std::printf("Texture atlas (paper 4.5): cone cos >= 0.7, gutter %d, dilation %d (defaults 4, 2).\n"
+                "eff%%: texels the charts overlap / all texels; ctr%%: texel centres inside charts / all;\n"
+                "over/overCtr: texels shared by two charts / centres inside two triangles; noArea: faces\n"
+                "without positive UV area; maxStr, max1/cos: singular values of surface->UV over the\n"
+                "density; near%%/bilin%%: crisp fidelity, 4 interior samples per face.\n",
+                gutter + (gutter & 1), (gutter + (gutter & 1)) / 2);
+    report(smoothed(voxelSphere(20)), 1024, 0, ppmDir);
+    if (all) {
+        report(voxelSphere(20), 1024, 0, ppmDir);
+        report(smoothed(voxelSphere(8)), 256, 0, ppmDir);
+        report(smoothed(voxelTorus(16, 6)), 1024, 0, ppmDir);
+        report(smoothed(voxelBlob(16, 7)), 1024, 0, ppmDir);
+        report(voxelBox(12, 7, 3), 256, 0, ppmDir);
+        report(smoothed(voxelSphere(20)), 0, 8, ppmDir);
+        report(smoothed(voxelSphere(70), 4), 0, 2, ppmDir);
+    }
+    if (models) {
+#ifdef VOXELFAIR_ATLAS_REPORT_MODELS
+        for (const char *name : {"3tnk", "jeep", "hmec", "subapc", "cc"}) {
+            TestMesh mesh;
+            if (loadVxl(name, mesh)) {
+                report(mesh, 1024, 0, ppmDir);
+                report(mesh, 0, 8, ppmDir);
+            }
+        }
+#else
+        std::printf("\n--models: built without the formats and extraction units\n");
+#endif
+    }
+    return 0;
+}
