@@ -5,33 +5,95 @@
 #include "attributes/face_normals.h"
 #include "attributes/vertex_colours.h"
 #include "attributes/vertex_normals.h"
+#include "fairing/constrained_fairing.h"
 #include "fairing/lanczos_fairing.h"
 
 #include <QElapsedTimer>
 
 #include <glm/common.hpp>
 
+#include <algorithm>
+
 using namespace voxelfair;
+
+namespace {
+
+// What one fairing run did, whichever mode; summed over parts.
+struct FairingSummary {
+    size_t moved = 0, skipped = 0, parts = 0;
+    float maxMove = 0.0f, minVoxel = 0.0f, maxVoxel = 0.0f;
+    std::string extra;  // the constrained mode's edge classes
+
+    void add(size_t movedVertices, size_t skippedVertices, float move, float voxel) {
+        moved += movedVertices;
+        skipped += skippedVertices;
+        maxMove = std::max(maxMove, move);
+        minVoxel = parts == 0 ? voxel : std::min(minVoxel, voxel);
+        maxVoxel = std::max(maxVoxel, voxel);
+        ++parts;
+    }
+};
+
+// Runs the chosen mode on one set of polygon arrays; returns an error message or nullptr.
+const char *fairArrays(bool constrained, const RichParameterList &parameters, std::vector<glm::vec3> &positions,
+                       const std::vector<uint32_t> &offsets, const std::vector<uint32_t> &indices,
+                       const uint8_t *selected, FairingSummary &summary) {
+    const size_t polygons = offsets.empty() ? 0 : offsets.size() - 1;
+    const float voxelSize = parameters.getFloat("voxelSize");
+    if (constrained) {
+        ConstrainedFairingOptions options;
+        options.voxelSize = voxelSize;
+        const ConstrainedFairingReport r =
+            fairConstrained(positions.data(), positions.size(), offsets.data(), indices.data(), polygons, selected, options);
+        if (r.failed()) return r.message;
+        if (r.status == FairingStatus::Ok) {
+            summary.add(r.movedVertices, r.skippedVertices, r.maxDisplacement, r.voxelSize);
+            summary.extra = QString("%1 sharp edges kept, %2 vertices pinned, %3 held by their voxel cell")
+                                .arg(r.sharpEdges).arg(r.pinnedVertices).arg(r.clampedVertices).toStdString();
+        }
+        return nullptr;
+    }
+    LanczosFairingOptions options;
+    options.lambda = parameters.getFloat("lambda");
+    options.passes = parameters.getInt("passes");
+    options.voxelSize = voxelSize;
+    const FairingReport r =
+        fairModifiedLanczos(positions.data(), positions.size(), offsets.data(), indices.data(), polygons, selected, options);
+    if (r.failed()) return r.message;
+    if (r.status == FairingStatus::Ok) summary.add(r.movedVertices, r.skippedVertices, r.maxDisplacement, r.voxelSize);
+    return nullptr;
+}
+
+}  // namespace
 
 bool FilterVoxelfairPlugin::applyLanczosFairing(MeshModel &m, const RichParameterList &parameters, vcg::CallBackPos *cb) {
     QElapsedTimer timer;
     timer.start();
     if (m.cm.fn == 0) return fail("Voxel Fairing: the mesh has no faces to smooth");
-    LanczosFairingOptions options;
-    options.lambda = parameters.getFloat("lambda");
-    options.passes = parameters.getInt("passes");
-    options.voxelSize = parameters.getFloat("voxelSize");
+    const bool constrained = parameters.getEnum("mode") == 1;
     const bool selectedOnly = parameters.getBool("Selected");
 
     if (cb) cb(10, "Reading polygons");
     PolygonArrays arrays = polygonArrays(m.cm);
     if (cb) cb(40, "Fairing");
-    const FairingReport result = fairModifiedLanczos(
-        arrays.positions.data(), arrays.positions.size(), arrays.polygonOffsets.data(), arrays.polygonIndices.data(),
-        arrays.polygonCount(), selectedOnly ? arrays.selected.data() : nullptr, options);
-    if (result.failed()) return fail(QString("Voxel Fairing: %1").arg(result.message));
-    if (result.status == FairingStatus::NothingToDo) {
-        report(QString("Voxel Fairing: nothing to do (%1)").arg(result.message));
+    FairingSummary summary;
+    // Parts of an import may have different voxel sizes: detect and fair each on its own.
+    std::vector<PartArrays> parts = parameters.getFloat("voxelSize") > 0 ? std::vector<PartArrays>{}
+                                                                         : splitByPart(arrays, m.cm);
+    if (parts.empty()) {
+        if (const char *error = fairArrays(constrained, parameters, arrays.positions, arrays.polygonOffsets,
+                                           arrays.polygonIndices, selectedOnly ? arrays.selected.data() : nullptr, summary))
+            return fail(QString("Voxel Fairing: %1").arg(error));
+    } else {
+        for (PartArrays &part : parts) {
+            if (const char *error = fairArrays(constrained, parameters, part.positions, part.polygonOffsets,
+                                               part.polygonIndices, selectedOnly ? part.selected.data() : nullptr, summary))
+                return fail(QString("Voxel Fairing: part %1: %2").arg(part.part).arg(error));
+            for (size_t v = 0; v < part.positions.size(); ++v) arrays.positions[part.globalVertex[v]] = part.positions[v];
+        }
+    }
+    if (summary.parts == 0) {
+        report("Voxel Fairing: nothing to do (no polygon edge of non-zero length)");
         return true;
     }
     writePositions(arrays, arrays.positions, m.cm);
@@ -39,17 +101,24 @@ bool FilterVoxelfairPlugin::applyLanczosFairing(MeshModel &m, const RichParamete
     // an acos per corner and would take longer than the fairing itself.
     vcg::tri::UpdateBounding<CMeshO>::Box(m.cm);
     vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFaceNormalized(m.cm);
-    report(QString("Voxel Fairing: %1 pass(es), lambda %2, voxel size %3%4: %5 vertices moved (at most %6) in %7 ms")
-               .arg(result.passes)
-               .arg(double(options.lambda))
-               .arg(double(result.voxelSize))
-               .arg(options.voxelSize > 0 ? "" : " (detected)")
-               .arg(result.movedVertices)
-               .arg(double(result.maxDisplacement))
+
+    const QString voxel = summary.minVoxel == summary.maxVoxel
+                              ? QString::number(double(summary.minVoxel))
+                              : QString("%1 to %2").arg(double(summary.minVoxel)).arg(double(summary.maxVoxel));
+    const QString how = constrained ? QString("constrained mode")
+                                    : QString("%1 pass(es), lambda %2").arg(parameters.getInt("passes")).arg(
+                                          double(parameters.getFloat("lambda")));
+    report(QString("Voxel Fairing: %1, voxel size %2%3%4: %5 vertices moved (at most %6)%7 in %8 ms")
+               .arg(how)
+               .arg(voxel)
+               .arg(parameters.getFloat("voxelSize") > 0 ? "" : " (detected)")
+               .arg(parts.empty() ? QString() : QString(" over %1 parts").arg(parts.size()))
+               .arg(summary.moved)
+               .arg(double(summary.maxMove))
+               .arg(summary.extra.empty() ? QString() : "; " + QString::fromStdString(summary.extra))
                .arg(timer.elapsed()));
-    if (result.skippedVertices > 0)
-        report(QString("Voxel Fairing: %1 vertices with non-finite coordinates were left alone")
-                   .arg(result.skippedVertices));
+    if (summary.skipped > 0)
+        report(QString("Voxel Fairing: %1 vertices with non-finite coordinates were left alone").arg(summary.skipped));
     return true;
 }
 

@@ -5,7 +5,7 @@
 #include <new>
 
 FilterVoxelfairPlugin::FilterVoxelfairPlugin() {
-    typeList << FP_LANCZOS_FAIRING << FP_ATTRIBUTE_SMOOTHING;
+    typeList << FP_LANCZOS_FAIRING << FP_ATTRIBUTE_SMOOTHING << FP_TEXTURE_ATLAS;
     for (FilterIDType id : types()) actionList << new QAction(filterName(id), this);
 }
 
@@ -13,6 +13,7 @@ QString FilterVoxelfairPlugin::filterName(FilterIDType filter) const {
     switch (filter) {
     case FP_LANCZOS_FAIRING: return "Voxel Fairing: Modified Lanczos";
     case FP_ATTRIBUTE_SMOOTHING: return "Voxel Fairing: Attribute Smoothing";
+    case FP_TEXTURE_ATLAS: return "Voxel Texture Atlas: Greedy Charts";
     }
     return QString();
 }
@@ -33,6 +34,17 @@ QString FilterVoxelfairPlugin::filterInfo(FilterIDType filter) const {
                "per-vertex normals as the normalised mean of the <b>distinct</b> normals of the adjacent faces "
                "(repeated directions counted once, so a voxel corner gets the diagonal whatever its faces' sizes) "
                "and per-vertex colours as the mean of the adjacent faces' colours.";
+    case FP_TEXTURE_ATLAS:
+        return "Section 4.5 of the SBGames 2010 paper: splits the mesh into charts grown greedily from the most "
+               "axis-aligned faces (a face joins while its normal stays within the chart angle of the seed face's), "
+               "projects each chart orthographically at one texel density, packs them into one square texture and "
+               "bakes a diffuse texture, saved as a PNG and referenced by the mesh (per-wedge UVs), ready for MeshLab's "
+               "<i>Quadric Edge Collapse Decimation (with texture)</i> and the PLY/OBJ exporters.<br>"
+               "<b>Crisp</b> colours give every texel the colour of the voxel face it lies in, so pixel art keeps "
+               "every voxel; <b>smoothed</b> bakes the vertex colours of the attribute smoothing, as the paper does. "
+               "<b>Tight</b> packing fills the charts' shapes bottom-left (about 75% coverage); <b>paper</b> is the "
+               "authors' guillotine merge of bounding boxes. Save the mesh in the texture's folder: the mesh refers "
+               "to the texture by its file name.";
     }
     return QString();
 }
@@ -42,6 +54,7 @@ MeshFilterInterface::FilterClass FilterVoxelfairPlugin::getClass(QAction *action
     switch (ID(action)) {
     case FP_LANCZOS_FAIRING: return MeshFilterInterface::Smoothing;
     case FP_ATTRIBUTE_SMOOTHING: return FilterClass(MeshFilterInterface::Normal | MeshFilterInterface::VertexColoring);
+    case FP_TEXTURE_ATLAS: return MeshFilterInterface::Texture;
     }
     return MeshFilterInterface::Smoothing;
 }
@@ -51,6 +64,7 @@ int FilterVoxelfairPlugin::getPreConditions(QAction *) const { return MeshModel:
 int FilterVoxelfairPlugin::getRequirements(QAction *action) {
     switch (ID(action)) {
     case FP_ATTRIBUTE_SMOOTHING: return MeshModel::MM_VERTCOLOR;
+    case FP_TEXTURE_ATLAS: return MeshModel::MM_WEDGTEXCOORD;
     default: return MeshModel::MM_NONE;
     }
 }
@@ -61,6 +75,7 @@ int FilterVoxelfairPlugin::postCondition(QAction *action) const {
     case FP_ATTRIBUTE_SMOOTHING:
         return MeshModel::MM_VERTNORMAL | MeshModel::MM_FACENORMAL | MeshModel::MM_VERTCOLOR | MeshModel::MM_FACEFLAG |
                MeshModel::MM_POLYGONAL;
+    case FP_TEXTURE_ATLAS: return MeshModel::MM_WEDGTEXCOORD;
     }
     return MeshModel::MM_ALL;
 }
@@ -68,13 +83,20 @@ int FilterVoxelfairPlugin::postCondition(QAction *action) const {
 void FilterVoxelfairPlugin::initParameterSet(QAction *action, MeshModel &m, RichParameterList &parameters) {
     switch (ID(action)) {
     case FP_LANCZOS_FAIRING:
+        parameters.addParam(RichEnum(
+            "mode", 0, QStringList() << "Paper" << "Constrained", "Mode",
+            "Paper: the SBGames 2010 operator exactly (lambda and passes below). Constrained (beyond the paper): "
+            "staircase-aware normal filtering and vertex fitting, every vertex kept inside its voxel cell: about "
+            "2.5 times more accurate on curved shapes, flat faces and straight edges kept sharp, thin parts and "
+            "volume kept; slower (two passes of its own; lambda and passes are not used)."));
         parameters.addParam(RichFloat("lambda", 4.0f / 3.0f, "Lambda",
                                       "Scales the estimated frequency (eq. 8). 4/3 is the authors' value; the paper's "
                                       "text says 1.3. Higher smooths more; above 1.5 the staircase starts to overshoot."));
         parameters.addParam(RichInt("passes", 1, "Passes", "The paper needs one pass; each further pass smooths more."));
         parameters.addParam(RichFloat("voxelSize", 0.0f, "Voxel size",
                                       "Length of a voxel in mesh units: the unit of the displacement. 0 detects it as "
-                                      "the mesh's dominant edge length, so a scaled model smooths the same."));
+                                      "the mesh's dominant edge length, so a scaled model smooths the same; on an "
+                                      "imported model, per section or instance."));
         parameters.addParam(RichBool("Selected", m.cm.svn > 0, "Affect only selected vertices",
                                      "Only selected vertices move; the others still act as neighbours."));
         break;
@@ -85,6 +107,31 @@ void FilterVoxelfairPlugin::initParameterSet(QAction *action, MeshModel &m, Rich
         parameters.addParam(RichBool("triangulate", true, "Quads to triangles",
                                      "Make the polygons plain triangles (as the paper does before the atlas). Off "
                                      "keeps MeshLab's polygon (faux edge) flags."));
+        break;
+    case FP_TEXTURE_ATLAS:
+        parameters.addParam(RichFloat("chartAngle", 45.573f, "Chart angle (degrees)",
+                                      "A face joins a chart while its normal is within this angle of the chart's seed "
+                                      "face normal. 45.57 (cos 0.7) is the authors' value; the paper's text says 60."));
+        parameters.addParam(RichEnum("packing", 0, QStringList() << "Tight" << "Paper", "Packing",
+                                     "Tight: bottom-left fill of the charts' rasterised shapes with quarter turns "
+                                     "(dense). Paper: the authors' guillotine merge of bounding boxes."));
+        parameters.addParam(RichFloat("texelsPerVoxel", 8.0f, "Texels per voxel",
+                                      "Texture resolution: texels along one voxel edge. 8 keeps every interior point of "
+                                      "every face on its own voxel colour; the side is rounded up "
+                                      "to a power of two."));
+        parameters.addParam(RichInt("maxTextureSize", 4096, "Maximum texture size",
+                                    "The largest texture side; if the charts do not fit, the resolution is lowered."));
+        parameters.addParam(RichFloat("voxelSize", 0.0f, "Voxel size",
+                                      "Length of a voxel in mesh units; 0 detects it from the dominant edge length."));
+        parameters.addParam(RichInt("gutter", 4, "Gutter (texels)",
+                                    "Empty texels between charts; half of it is filled with the chart's colours so "
+                                    "bilinear filtering and the first mip level do not bleed."));
+        parameters.addParam(RichEnum("colours", 0, QStringList() << "Crisp voxel colours" << "Smoothed vertex colours",
+                                     "Texture colours",
+                                     "Crisp: each texel takes its face's colour (from face colours). Smoothed: the "
+                                     "vertex colours interpolated, as the paper does."));
+        parameters.addParam(RichString("textureFile", defaultTextureName(m), "Texture file",
+                                       "The PNG to write: a relative name is put beside the mesh's file."));
         break;
     }
 }
@@ -110,6 +157,7 @@ bool FilterVoxelfairPlugin::applyFilter(QAction *action, MeshDocument &md, const
         switch (ID(action)) {
         case FP_LANCZOS_FAIRING: return applyLanczosFairing(*m, parameters, cb);
         case FP_ATTRIBUTE_SMOOTHING: return applyAttributeSmoothing(*m, parameters, cb);
+        case FP_TEXTURE_ATLAS: return applyTextureAtlas(*m, parameters, cb);
         }
         return fail("unknown filter");
     } catch (const std::bad_alloc &) {

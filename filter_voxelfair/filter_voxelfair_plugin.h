@@ -6,6 +6,9 @@
 
 #include <QObject>
 
+// The texture file a mesh's atlas is written to by default: "<mesh name>_texture.png" beside it.
+QString defaultTextureName(const MeshModel &m);
+
 class FilterVoxelfairPlugin : public QObject, public MeshFilterInterface {
     Q_OBJECT
     MESHLAB_PLUGIN_IID_EXPORTER(MESH_FILTER_INTERFACE_IID)
@@ -14,7 +17,8 @@ class FilterVoxelfairPlugin : public QObject, public MeshFilterInterface {
 public:
     enum FilterId {
         FP_LANCZOS_FAIRING,    // section 4.3
-        FP_ATTRIBUTE_SMOOTHING  // section 4.4
+        FP_ATTRIBUTE_SMOOTHING,  // section 4.4
+        FP_TEXTURE_ATLAS         // section 4.5
     };
 
     FilterVoxelfairPlugin();
@@ -34,6 +38,7 @@ public:
 private:
     bool applyLanczosFairing(MeshModel &m, const RichParameterList &parameters, vcg::CallBackPos *cb);
     bool applyAttributeSmoothing(MeshModel &m, const RichParameterList &parameters, vcg::CallBackPos *cb);
+    bool applyTextureAtlas(MeshModel &m, const RichParameterList &parameters, vcg::CallBackPos *cb);
 
     // Sets errorMessage, logs it and writes it to stderr (meshlabserver never prints errorMessage).
     bool fail(const QString &message);

@@ -170,4 +170,43 @@ void writePositions(const PolygonArrays &arrays, const std::vector<glm::vec3> &p
     }
 }
 
+std::vector<PartArrays> splitByPart(const PolygonArrays &arrays, const CMeshO &mesh) {
+    if (!vcg::tri::HasPerFaceAttribute(mesh, "voxelfair_part")) return {};
+    // vcglib's attribute lookup takes a mutable mesh; nothing is written through it.
+    CMeshO &lookup = const_cast<CMeshO &>(mesh);
+    auto partOf = vcg::tri::Allocator<CMeshO>::FindPerFaceAttribute<int>(lookup, "voxelfair_part");
+    if (!vcg::tri::Allocator<CMeshO>::IsValidHandle(lookup, partOf)) return {};
+
+    std::vector<PartArrays> parts;
+    std::vector<int> slotOfPart;  // part number -> index into parts (parts are small numbers)
+    std::vector<uint32_t> localVertex(arrays.positions.size(), kNone);
+    std::vector<uint32_t> vertexPart(arrays.positions.size(), kNone);
+    for (size_t p = 0; p < arrays.polygonCount(); ++p) {
+        const int part = partOf[arrays.polygonFace[p]];
+        if (part < 0) return {};
+        if (size_t(part) >= slotOfPart.size()) slotOfPart.resize(size_t(part) + 1, -1);
+        if (slotOfPart[size_t(part)] < 0) {
+            slotOfPart[size_t(part)] = int(parts.size());
+            parts.push_back(PartArrays{part, {}, {}, {0}, {}, {}});
+        }
+        PartArrays &out = parts[size_t(slotOfPart[size_t(part)])];
+        for (uint32_t i = arrays.polygonOffsets[p]; i < arrays.polygonOffsets[p + 1]; ++i) {
+            const uint32_t v = arrays.polygonIndices[i];
+            if (vertexPart[v] == kNone) {
+                vertexPart[v] = uint32_t(slotOfPart[size_t(part)]);
+                localVertex[v] = uint32_t(out.positions.size());
+                out.positions.push_back(arrays.positions[v]);
+                out.globalVertex.push_back(v);
+                out.selected.push_back(arrays.selected[v]);
+            } else if (vertexPart[v] != uint32_t(slotOfPart[size_t(part)])) {
+                return {};  // parts sharing vertices: not an import's layout, treat as one
+            }
+            out.polygonIndices.push_back(localVertex[v]);
+        }
+        out.polygonOffsets.push_back(uint32_t(out.polygonIndices.size()));
+    }
+    if (parts.size() < 2) return {};
+    return parts;
+}
+
 }  // namespace voxelfair

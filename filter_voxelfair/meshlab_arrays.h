@@ -30,4 +30,22 @@ PolygonArrays polygonArrays(const CMeshO &mesh);
 // Writes `positions` back to the vertices they came from.
 void writePositions(const PolygonArrays &arrays, const std::vector<glm::vec3> &positions, CMeshO &mesh);
 
+// The polygons of one part of a voxelfair import (a VXL section, a VOX instance), renumbered
+// from 0, and where its vertices are in the whole mesh's arrays.
+struct PartArrays {
+    int part = 0;
+    std::vector<glm::vec3> positions;
+    std::vector<uint32_t> globalVertex;  // part vertex -> index into PolygonArrays::positions
+    std::vector<uint32_t> polygonOffsets;
+    std::vector<uint32_t> polygonIndices;
+    std::vector<uint8_t> selected;
+
+    size_t polygonCount() const { return polygonOffsets.size() - 1; }
+};
+
+// Splits `arrays` by the per-face part attribute io_vxl writes ("voxelfair_part"). Parts may be
+// scaled differently (an HVA frame can shrink a section to 1%), so each needs its own voxel
+// size. Returns nothing when the mesh has no such attribute or only one part.
+std::vector<PartArrays> splitByPart(const PolygonArrays &arrays, const CMeshO &mesh);
+
 }  // namespace voxelfair

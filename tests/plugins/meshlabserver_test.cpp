@@ -222,6 +222,7 @@ std::string writeScript(const std::string &dir, const std::string &filters) {
 }
 
 const char *kFairingFilter = R"(<filter name="Voxel Fairing: Modified Lanczos">
+ <Param type="RichEnum" name="mode" value="0" enum_cardinality="2" enum_val0="Paper" enum_val1="Constrained"/>
  <Param type="RichFloat" name="lambda" value="1.33333337"/>
  <Param type="RichInt" name="passes" value="1"/>
  <Param type="RichFloat" name="voxelSize" value="0"/>

@@ -56,6 +56,15 @@ PlyMesh readAsciiPly(const std::string &path) {
             std::array<uint8_t, 4> colour{0, 0, 0, 255};
             bool hasColour = false;
             for (const std::string &prop : e.properties) {
+                if (prop == "list:texcoord") {
+                    size_t n = 0;
+                    values >> n;
+                    if (n != 6) throw std::runtime_error(path + ": a face has " + std::to_string(n) + " texcoords");
+                    std::array<float, 6> uv{};
+                    for (float &x : uv) values >> x;
+                    mesh.wedgeUv.push_back(uv);
+                    continue;
+                }
                 if (prop.rfind("list:", 0) == 0) {
                     size_t n = 0;
                     values >> n;

@@ -12,6 +12,7 @@ struct PlyMesh {
     std::vector<std::array<uint32_t, 3>> triangles;
     std::vector<std::array<uint8_t, 4>> faceColours;  // empty when the file has none
     std::vector<float> faceQuality;                   // empty when the file has none
+    std::vector<std::array<float, 6>> wedgeUv;        // u0 v0 u1 v1 u2 v2 per face; empty when none
     std::vector<std::string> comments;                // header comments (e.g. TextureFile)
 };
 

@@ -1,0 +1,157 @@
+// The texture filter: section 4.5, greedy charts, packing and a baked diffuse texture (PNG).
+#include "filter_voxelfair_plugin.h"
+#include "meshlab_arrays.h"
+
+#include "atlas/texture_atlas.h"
+#include "fairing/voxel_size.h"
+
+#include <QDir>
+#include <QElapsedTimer>
+#include <QFileInfo>
+#include <QImage>
+
+#include <cmath>
+
+using namespace voxelfair;
+
+namespace {
+
+// The triangles of a MeshLab mesh with their colours, as the atlas unit reads them.
+struct AtlasInput {
+    std::vector<glm::vec3> positions;
+    std::vector<uint32_t> triangles;
+    std::vector<uint32_t> faceOf;  // atlas face -> index into CMeshO::face
+    std::vector<glm::u8vec3> faceColours, vertexColours;
+    AtlasMesh mesh;
+};
+
+void readAtlasInput(const MeshModel &m, AtlasInput &in) {
+    const CMeshO &cm = m.cm;
+    std::vector<uint32_t> arrayIndex(cm.vert.size(), 0);
+    const bool vertexColours = m.hasDataMask(MeshModel::MM_VERTCOLOR);
+    for (size_t v = 0; v < cm.vert.size(); ++v) {
+        if (cm.vert[v].IsD()) continue;
+        arrayIndex[v] = uint32_t(in.positions.size());
+        const auto &p = cm.vert[v].cP();
+        in.positions.emplace_back(p[0], p[1], p[2]);
+        if (vertexColours) {
+            const vcg::Color4b &c = cm.vert[v].cC();
+            in.vertexColours.emplace_back(c[0], c[1], c[2]);
+        }
+    }
+    const bool faceColours = m.hasDataMask(MeshModel::MM_FACECOLOR);
+    for (size_t f = 0; f < cm.face.size(); ++f) {
+        const CFaceO &face = cm.face[f];
+        if (face.IsD()) continue;
+        for (int k = 0; k < 3; ++k) in.triangles.push_back(arrayIndex[vcg::tri::Index(cm, face.cV(k))]);
+        in.faceOf.push_back(uint32_t(f));
+        if (faceColours) in.faceColours.emplace_back(face.cC()[0], face.cC()[1], face.cC()[2]);
+    }
+    in.mesh.positions = in.positions.data();
+    in.mesh.vertexCount = in.positions.size();
+    in.mesh.triangles = in.triangles.data();
+    in.mesh.faceCount = in.faceOf.size();
+    in.mesh.faceColours = faceColours ? in.faceColours.data() : nullptr;
+    in.mesh.vertexColours = vertexColours ? in.vertexColours.data() : nullptr;
+}
+
+// Where the PNG goes: an absolute name as given; a relative one beside the mesh's file (or in
+// the current folder for a mesh that has none).
+QString texturePath(const MeshModel &m, const QString &name) {
+    if (QFileInfo(name).isAbsolute()) return QDir::cleanPath(name);
+    const QString meshFile = m.fullName();
+    const QDir folder = meshFile.isEmpty() ? QDir::current() : QFileInfo(meshFile).absoluteDir();
+    return QDir::cleanPath(folder.absoluteFilePath(name));
+}
+
+}  // namespace
+
+QString defaultTextureName(const MeshModel &m) {
+    const QString base = QFileInfo(m.fullName()).completeBaseName();
+    return (base.isEmpty() ? QString("voxelfair") : base) + "_texture.png";
+}
+
+bool FilterVoxelfairPlugin::applyTextureAtlas(MeshModel &m, const RichParameterList &parameters, vcg::CallBackPos *cb) {
+    QElapsedTimer timer;
+    timer.start();
+    if (m.cm.fn == 0) return fail("Texture Atlas: the mesh has no faces");
+
+    AtlasInput input;
+    readAtlasInput(m, input);
+
+    AtlasOptions options;
+    const float angle = parameters.getFloat("chartAngle");
+    if (!(angle > 0.0f && angle < 90.0f)) return fail("Texture Atlas: the chart angle must be between 0 and 90 degrees");
+    options.charts.minSeedCosine = std::cos(angle * float(M_PI) / 180.0f);
+    options.pack.mode = parameters.getEnum("packing") == 1 ? PackMode::Paper : PackMode::Tight;
+    float voxelSize = parameters.getFloat("voxelSize");
+    if (voxelSize <= 0.0f) {
+        // One density for all charts: that of the import's largest part, so a section an HVA
+        // frame shrinks to 1% does not blow the texture up a hundredfold.
+        const PolygonArrays arrays = polygonArrays(m.cm);
+        const std::vector<PartArrays> parts = splitByPart(arrays, m.cm);
+        const PartArrays *largest = nullptr;
+        for (const PartArrays &part : parts)
+            if (largest == nullptr || part.polygonCount() > largest->polygonCount()) largest = &part;
+        voxelSize = largest ? detectVoxelSize(largest->positions.data(), largest->positions.size(),
+                                              largest->polygonOffsets.data(), largest->polygonIndices.data(),
+                                              largest->polygonCount())
+                            : detectVoxelSize(arrays.positions.data(), arrays.positions.size(),
+                                              arrays.polygonOffsets.data(), arrays.polygonIndices.data(),
+                                              arrays.polygonCount());
+        if (!(voxelSize > 0.0f)) voxelSize = 1.0f;
+    }
+    const float texelsPerVoxel = parameters.getFloat("texelsPerVoxel");
+    if (!(texelsPerVoxel > 0.0f)) return fail("Texture Atlas: texels per voxel must be positive");
+    options.pack.texelsPerUnit = texelsPerVoxel / voxelSize;
+    options.pack.maxTextureSize = parameters.getInt("maxTextureSize");
+    options.pack.gutter = parameters.getInt("gutter");
+    options.bake.source = parameters.getEnum("colours") == 1 ? BakeSource::VertexColours : BakeSource::FaceColours;
+
+    if (cb) cb(10, "Building the texture atlas");
+    const TextureAtlas atlas = buildTextureAtlas(input.mesh, options);
+    if (atlas.status() != AtlasStatus::Ok)
+        return fail(QString("Texture Atlas: %1").arg(QString::fromStdString(atlas.message())));
+
+    // Write the texture before touching the mesh, so a failure leaves the mesh as it was.
+    if (cb) cb(80, "Writing the texture");
+    const QString path = texturePath(m, parameters.getString("textureFile").trimmed());
+    if (QFileInfo(path).fileName().isEmpty()) return fail("Texture Atlas: the texture file name is empty");
+    const QImage image(atlas.texture.rgba.data(), atlas.texture.size, atlas.texture.size, atlas.texture.size * 4,
+                       QImage::Format_RGBA8888);
+    if (!QDir().mkpath(QFileInfo(path).absolutePath()) || !image.save(path, "PNG"))
+        return fail(QString("Texture Atlas: could not write the texture to %1").arg(path));
+
+    m.updateDataMask(MeshModel::MM_WEDGTEXCOORD);
+    for (size_t i = 0; i < input.faceOf.size(); ++i) {
+        CFaceO &face = m.cm.face[input.faceOf[i]];
+        for (int k = 0; k < 3; ++k) {
+            const glm::vec2 uv = atlas.layout.wedgeUv[3 * i + size_t(k)];
+            face.WT(k).U() = uv.x;
+            face.WT(k).V() = uv.y;
+            face.WT(k).N() = 0;
+        }
+    }
+    // Exporters write the name as stored: keep it relative so mesh and texture travel together
+    // (save the mesh in the texture's folder).
+    m.cm.textures.clear();
+    m.cm.textures.push_back(QFileInfo(path).fileName().toStdString());
+
+    report(QString("Texture Atlas: %1 charts, %2 x %2 texture at %3 texels per voxel%4 (%5 packing), %6 baked%7 -> %8 "
+                   "in %9 ms")
+               .arg(atlas.charts.chartCount())
+               .arg(atlas.layout.size)
+               .arg(atlas.layout.texelsPerUnit * double(voxelSize), 0, 'g', 3)
+               .arg(atlas.layout.densityReduced ? " (reduced to fit the maximum size)" : "")
+               .arg(toString(atlas.layout.mode))
+               .arg(toString(atlas.texture.source))
+               .arg(atlas.texture.note.empty() ? QString() : QString(" (%1)").arg(QString::fromStdString(atlas.texture.note)))
+               .arg(path)
+               .arg(timer.elapsed()));
+    if (atlas.charts.nonManifoldEdges > 0 || atlas.charts.degenerateFaces > 0)
+        report(QString("Texture Atlas: %1 non-manifold edges used as chart borders, %2 degenerate faces given their own "
+                       "texel")
+                   .arg(atlas.charts.nonManifoldEdges)
+                   .arg(atlas.charts.degenerateFaces));
+    return true;
+}
