@@ -1,0 +1,313 @@
+// The paper's chain (sections 4.2-4.5) as separate stages on plain arrays, so each can be timed
+// and its output counted: shared by tools/comparison_report and benchmarks/pipeline_benchmark.
+//
+//   load (VXL + HVA + palette, VOX, or a volume)  ->  VoxelScene
+//   extract()            4.2  boundary quads with their voxel colours
+//   fair()               4.3  modified-Lanczos fairing, in place
+//   smoothAttributes()   4.4  face/vertex normals, vertex colours, quads -> triangles (a-c)
+//   buildAtlas()         4.5  charts, packing, baked diffuse texture
+//
+// Header-only on voxelfair::core, so the benchmark needs no extra library.
+#pragma once
+
+#include "atlas/texture_atlas.h"
+#include "attributes/face_normals.h"
+#include "attributes/triangulate.h"
+#include "attributes/vertex_colours.h"
+#include "attributes/vertex_normals.h"
+#include "fairing/lanczos_fairing.h"
+#include "fairing/voxel_size.h"
+#include "formats/file_bytes.h"
+#include "formats/hva.h"
+#include "formats/palette.h"
+#include "formats/vox.h"
+#include "formats/vxl.h"
+#include "scene/vox_scene.h"
+#include "scene/voxel_scene.h"
+#include "scene/vxl_scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+#include <glm/gtc/type_precision.hpp>
+#include <glm/vec4.hpp>
+
+// The second fairing mode, once libvoxelfair/fairing has it.
+#if __has_include("fairing/constrained_fairing.h")
+#include "fairing/constrained_fairing.h"
+#define VOXELFAIR_HAVE_CONSTRAINED_FAIRING 1
+#endif
+
+namespace voxelfair::pipeline {
+
+// A model ready for meshing. Owns what its scene points into, so it is neither copied nor moved.
+struct Model {
+    std::string name;
+    std::string paletteSource;  // VXL: which palette coloured it
+    VxlModel vxl;
+    std::optional<HvaAnimation> hva;
+    VoxFile vox;
+    std::vector<VoxelVolume> volumes;  // for models built from volumes
+    // What the chain runs on. VXL sections stay in their own voxel units, as the authors ran
+    // them (vxlse3-notes §1): a model mixing section scales (subapc's HVA shrinks four of its five
+    // sections to 0.01) would otherwise have no single voxel size for the fairing and the atlas.
+    VoxelScene scene;
+    // Per part: the chain's coordinates -> model space, for pictures (identity when equal).
+    std::vector<glm::mat4> toDisplay;
+
+    Model() = default;
+    Model(const Model &) = delete;
+    Model &operator=(const Model &) = delete;
+
+    // The paper's Table 2 "Voxels": the parts' bounding boxes; "Opaque Voxels": the solid ones.
+    size_t boxVoxels() const {
+        size_t n = 0;
+        for (const PlacedVolume &p : scene.parts)
+            n += size_t(p.volume->sizeX) * size_t(p.volume->sizeY) * size_t(p.volume->sizeZ);
+        return n;
+    }
+    size_t solidVoxels() const {
+        size_t n = 0;
+        for (const PlacedVolume &p : scene.parts)
+            n += p.volume->voxelCount();
+        return n;
+    }
+};
+
+// A .vxl with the .hva beside it (same stem) when there is one, frame 0. When the embedded
+// palette is all zeros (many community files), the game palette from `paletteDir` matching the
+// model's normal type (ts_unittem.pal for Tiberian Sun, ra2_unittem.pal otherwise) colours it.
+// Throws FormatError.
+inline std::unique_ptr<Model> loadVxl(const std::string &path, const std::string &paletteDir) {
+    auto model = std::make_unique<Model>();
+    model->name = std::filesystem::path(path).stem().string();
+    const std::vector<uint8_t> bytes = readFileBytes(path);
+    model->vxl = readVxl(bytes.data(), bytes.size());
+    const std::filesystem::path hvaPath = std::filesystem::path(path).replace_extension(".hva");
+    if (std::filesystem::exists(hvaPath)) {
+        const std::vector<uint8_t> hvaBytes = readFileBytes(hvaPath.string());
+        model->hva = readHva(hvaBytes.data(), hvaBytes.size());
+    }
+    VxlSceneOptions options;
+    Palette external;
+    if (model->vxl.embeddedPalette.allZero() && !paletteDir.empty()) {
+        const bool tiberianSun = !model->vxl.sections.empty() &&
+                                 model->vxl.sections.front().normalType == uint8_t(VxlNormalType::TiberianSun);
+        const std::string palPath = paletteDir + (tiberianSun ? "/ts_unittem.pal" : "/ra2_unittem.pal");
+        if (std::filesystem::exists(palPath)) {
+            const std::vector<uint8_t> palBytes = readFileBytes(palPath);
+            external = readPal(palBytes.data(), palBytes.size());
+            options.externalPalette = &external;
+            model->paletteSource = std::filesystem::path(palPath).filename().string();
+        }
+    }
+    if (model->paletteSource.empty())
+        model->paletteSource = chooseVxlPalette(model->vxl, options).source;
+    const HvaAnimation *hva = model->hva ? &*model->hva : nullptr;
+    for (const PlacedVolume &part : vxlScene(model->vxl, hva, options).parts)
+        model->toDisplay.push_back(part.toModel);
+    options.applyTransforms = false;
+    model->scene = vxlScene(model->vxl, hva, options);
+    return model;
+}
+
+// A .vox, frame 0. Throws FormatError.
+inline std::unique_ptr<Model> loadVox(const std::string &path) {
+    auto model = std::make_unique<Model>();
+    model->name = std::filesystem::path(path).stem().string();
+    const std::vector<uint8_t> bytes = readFileBytes(path);
+    model->vox = readVox(bytes.data(), bytes.size());
+    model->paletteSource = "file";
+    model->scene = voxScene(model->vox);  // instances turn and move, but keep one voxel per unit
+    model->toDisplay.assign(model->scene.parts.size(), glm::mat4(1.0f));
+    return model;
+}
+
+// Volumes meshed in their own voxel units, shown placed by `toDisplay` (one matrix per volume),
+// with `palette`: e.g. a voxelized analytic shape, or a synthetic multi-section model.
+inline std::unique_ptr<Model> volumesModel(std::string name, std::vector<VoxelVolume> volumes,
+                                           std::vector<glm::mat4> toDisplay, const Palette &palette) {
+    auto model = std::make_unique<Model>();
+    model->name = std::move(name);
+    model->paletteSource = "given";
+    model->volumes = std::move(volumes);
+    model->toDisplay = std::move(toDisplay);
+    model->toDisplay.resize(model->volumes.size(), glm::mat4(1.0f));
+    model->scene.palette = palette;
+    for (size_t i = 0; i < model->volumes.size(); ++i) {
+        PlacedVolume part;
+        part.volume = &model->volumes[i];
+        part.part = int(i);
+        part.name = model->name;
+        model->scene.parts.push_back(part);
+    }
+    return model;
+}
+
+inline std::unique_ptr<Model> volumeModel(std::string name, VoxelVolume volume, const Palette &palette) {
+    std::vector<VoxelVolume> volumes;
+    volumes.push_back(std::move(volume));
+    return volumesModel(std::move(name), std::move(volumes), {}, palette);
+}
+
+// Section 4.2's output: quads with their voxel's colour.
+struct QuadMesh {
+    std::vector<glm::vec3> positions;
+    std::vector<uint32_t> offsets;  // polygon offsets (4 * q), for the polygon-array units
+    std::vector<uint32_t> quads;
+    std::vector<glm::u8vec3> quadColours;
+    std::vector<uint32_t> quadPart;  // index into the scene's parts
+    float voxelSize = 1.0f;  // edge length of one voxel in the mesh's units
+
+    size_t quadCount() const { return quads.size() / 4; }
+    size_t vertexCount() const { return positions.size(); }
+};
+
+inline QuadMesh extract(const VoxelScene &scene) {
+    SceneSurface surface = extractSceneSurface(scene);
+    QuadMesh mesh;
+    mesh.positions = std::move(surface.positions);
+    mesh.quads = std::move(surface.quads);
+    mesh.offsets.resize(mesh.quadCount() + 1);
+    for (size_t q = 0; q < mesh.offsets.size(); ++q)
+        mesh.offsets[q] = uint32_t(4 * q);
+    mesh.quadColours.reserve(surface.quadColours.size());
+    for (const Rgb &c : surface.quadColours)
+        mesh.quadColours.emplace_back(c.r, c.g, c.b);
+    for (size_t part = 0; part < surface.partQuadCounts.size(); ++part)
+        mesh.quadPart.insert(mesh.quadPart.end(), surface.partQuadCounts[part], uint32_t(part));
+    const float size = detectVoxelSize(mesh.positions.data(), mesh.positions.size(), mesh.offsets.data(),
+                                       mesh.quads.data(), mesh.quadCount());
+    mesh.voxelSize = size > 0.0f ? size : 1.0f;
+    return mesh;
+}
+
+// One pass of the paper's fairing (default options), in the extracted mesh's voxel units.
+inline FairingReport fair(QuadMesh &mesh, LanczosFairingOptions options = {}) {
+    if (options.voxelSize == 0.0f)
+        options.voxelSize = mesh.voxelSize;
+    return fairModifiedLanczos(mesh.positions.data(), mesh.positions.size(), mesh.offsets.data(), mesh.quads.data(),
+                               mesh.quadCount(), nullptr, options);
+}
+
+#ifdef VOXELFAIR_HAVE_CONSTRAINED_FAIRING
+// The constrained mode (default options) in place of the paper's fairing.
+inline ConstrainedFairingReport fairConstrainedMode(QuadMesh &mesh, ConstrainedFairingOptions options = {}) {
+    if (options.voxelSize == 0.0f)
+        options.voxelSize = mesh.voxelSize;
+    return fairConstrained(mesh.positions.data(), mesh.positions.size(), mesh.offsets.data(), mesh.quads.data(),
+                           mesh.quadCount(), nullptr, options);
+}
+#endif
+
+// Section 4.4's output, on the (faired) quad mesh's vertices.
+struct Attributes {
+    std::vector<glm::vec3> quadNormals;
+    std::vector<glm::vec3> vertexNormals;    // distinct adjacent face normals
+    std::vector<glm::u8vec3> vertexColours;  // mean of the adjacent quads' colours
+    std::vector<uint32_t> triangles;         // a-c fan: quad q -> triangles 2q, 2q + 1
+    std::vector<uint32_t> triangleQuad;
+    std::vector<glm::u8vec3> triangleColours;
+
+    size_t triangleCount() const { return triangleQuad.size(); }
+};
+
+inline Attributes smoothAttributes(const QuadMesh &mesh) {
+    const size_t quads = mesh.quadCount(), vertices = mesh.vertexCount();
+    Attributes a;
+    a.quadNormals.resize(quads);
+    a.vertexNormals.resize(vertices);
+    computePolygonNormals(mesh.positions.data(), vertices, mesh.offsets.data(), mesh.quads.data(), quads,
+                          a.quadNormals.data());
+    computeVertexNormals(vertices, mesh.offsets.data(), mesh.quads.data(), quads, a.quadNormals.data(),
+                         a.vertexNormals.data());
+
+    std::vector<glm::vec4> quadColours(quads), vertexColours(vertices);
+    for (size_t q = 0; q < quads; ++q)
+        quadColours[q] = glm::vec4(glm::vec3(mesh.quadColours[q]), 255.0f);
+    computeVertexColours(vertices, mesh.offsets.data(), mesh.quads.data(), quads, quadColours.data(),
+                         vertexColours.data());
+    a.vertexColours.resize(vertices);
+    for (size_t v = 0; v < vertices; ++v)
+        a.vertexColours[v] = glm::u8vec3(glm::clamp(glm::round(glm::vec3(vertexColours[v])), 0.0f, 255.0f));
+
+    const size_t triangles = countFanTriangles(mesh.offsets.data(), quads);
+    a.triangles.resize(3 * triangles);
+    a.triangleQuad.resize(triangles);
+    triangulatePolygons(vertices, mesh.offsets.data(), mesh.quads.data(), quads, a.triangles.data(),
+                        a.triangleQuad.data());
+    a.triangleColours.resize(triangles);
+    for (size_t t = 0; t < triangles; ++t)
+        a.triangleColours[t] = mesh.quadColours[a.triangleQuad[t]];
+    return a;
+}
+
+// The atlas' view of the mesh: crisp voxel colours per triangle, smoothed ones per vertex.
+inline AtlasMesh atlasMesh(const QuadMesh &mesh, const Attributes &a) {
+    AtlasMesh m;
+    m.positions = mesh.positions.data();
+    m.vertexCount = mesh.vertexCount();
+    m.triangles = a.triangles.data();
+    m.faceCount = a.triangleCount();
+    m.faceColours = a.triangleColours.data();
+    m.vertexColours = a.vertexColours.data();
+    return m;
+}
+
+// Density in texels per voxel edge whatever the model's scale.
+inline TextureAtlas buildAtlas(const QuadMesh &mesh, const Attributes &a, AtlasOptions options = {}) {
+    options.pack.texelsPerUnit /= mesh.voxelSize;
+    return buildTextureAtlas(atlasMesh(mesh, a), options);
+}
+
+// Vertices of the textured mesh: a vertex on faces of k charts is cloned k times (section 4.5).
+inline size_t atlasVertexCount(const TextureAtlas &atlas, const Attributes &a) {
+    std::vector<uint64_t> keys;
+    keys.reserve(a.triangles.size());
+    for (size_t t = 0; t < atlas.charts.faceChart.size(); ++t)
+        for (int k = 0; k < 3; ++k)
+            keys.push_back(uint64_t(a.triangles[3 * t + size_t(k)]) << 32 | atlas.charts.faceChart[t]);
+    std::sort(keys.begin(), keys.end());
+    return size_t(std::unique(keys.begin(), keys.end()) - keys.begin());
+}
+
+// The mesh's vertices (and optionally unit normals) in model space, for pictures: each vertex
+// moved with its part (every vertex belongs to the quads of one part).
+inline std::vector<glm::vec3> displayPositions(const QuadMesh &mesh, const Model &model) {
+    std::vector<glm::vec3> out = mesh.positions;
+    for (size_t q = 0; q < mesh.quadCount(); ++q) {
+        const glm::mat4 &m = model.toDisplay[mesh.quadPart[q]];
+        for (size_t k = 4 * q; k < 4 * q + 4; ++k)
+            out[mesh.quads[k]] = glm::vec3(m * glm::vec4(mesh.positions[mesh.quads[k]], 1.0f));
+    }
+    return out;
+}
+
+inline std::vector<glm::vec3> displayNormals(const QuadMesh &mesh, const Model &model, const std::vector<glm::vec3> &normals) {
+    std::vector<glm::mat3> normalMatrix;
+    for (const glm::mat4 &m : model.toDisplay)
+        normalMatrix.push_back(glm::transpose(glm::inverse(glm::mat3(m))));
+    std::vector<glm::vec3> out = normals;
+    for (size_t q = 0; q < mesh.quadCount(); ++q) {
+        const glm::mat3 &m = normalMatrix[mesh.quadPart[q]];
+        for (size_t k = 4 * q; k < 4 * q + 4; ++k) {
+            const glm::vec3 n = m * normals[mesh.quads[k]];
+            const float length = glm::length(n);
+            out[mesh.quads[k]] = length > 0.0f ? n / length : n;
+        }
+    }
+    return out;
+}
+
+}  // namespace voxelfair::pipeline
