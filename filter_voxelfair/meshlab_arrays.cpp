@@ -177,6 +177,12 @@ std::vector<PartArrays> splitByPart(const PolygonArrays &arrays, const CMeshO &m
     auto partOf = vcg::tri::Allocator<CMeshO>::FindPerFaceAttribute<int>(lookup, "voxelfair_part");
     if (!vcg::tri::Allocator<CMeshO>::IsValidHandle(lookup, partOf)) return {};
 
+    // Most meshes are one part: find out before copying anything.
+    bool severalParts = false;
+    for (size_t p = 1; p < arrays.polygonCount() && !severalParts; ++p)
+        severalParts = partOf[arrays.polygonFace[p]] != partOf[arrays.polygonFace[0]];
+    if (!severalParts) return {};
+
     std::vector<PartArrays> parts;
     std::vector<int> slotOfPart;  // part number -> index into parts (parts are small numbers)
     std::vector<uint32_t> localVertex(arrays.positions.size(), kNone);
