@@ -32,6 +32,11 @@ constexpr int kMaxVoxModels = 65536;
 // expand to exponentially many instances; real scenes nest a few levels and hold thousands.
 constexpr int kMaxVoxGraphDepth = 256;
 constexpr size_t kMaxVoxInstances = size_t(1) << 20;
+// Each instance shows its model's voxels again, so a few hundred bytes of graph over one large
+// model could show billions. The voxels shown (summed over instances, a shape counted with its
+// largest keyframe model) are capped at 2^24, one full 256^3 model, or at the voxels the models
+// hold when that is more (8ontop shows 12096, test-transform 621232).
+constexpr size_t kMaxVoxShownVoxels = size_t(1) << 24;
 
 // One keyframe of a transform node (nTRN): its placement from `frame` on.
 struct VoxTransformKey {

@@ -472,13 +472,16 @@ private:
     }
 
     // From the root: no cycle, at most kMaxVoxGraphDepth levels, at most kMaxVoxInstances shape
-    // instances. Iterative, so a long chain cannot overflow the stack; shared nodes are visited
-    // once and their subtree's height and instance count reused.
+    // instances showing at most kMaxVoxShownVoxels voxels. Iterative, so a long chain cannot
+    // overflow the stack; shared nodes are visited once and their subtree's figures reused.
     void checkGraphShape() const {
         enum : uint8_t { kUnvisited, kOnPath, kDone };
         const size_t n = file_.nodes.size();
+        size_t heldVoxels = 0;
+        for (const VoxelVolume &model : file_.models) heldVoxels += model.voxelCount();
+        const size_t maxShown = std::max(kMaxVoxShownVoxels, heldVoxels);
         std::vector<uint8_t> state(n, kUnvisited);
-        std::vector<size_t> height(n, 0), instances(n, 0);
+        std::vector<size_t> height(n, 0), instances(n, 0), shown(n, 0);
         struct Step {
             int node;
             size_t nextChild;
@@ -499,13 +502,17 @@ private:
                 }
                 continue;
             }
-            size_t h = 0, count = node.kind == VoxNodeKind::Shape ? 1 : 0;
+            size_t h = 0, count = node.kind == VoxNodeKind::Shape ? 1 : 0, voxels = 0;
+            for (const VoxShapeKey &key : node.shapeKeys)
+                voxels = std::max(voxels, file_.models[size_t(key.model)].voxelCount());
             for (int child : node.children) {
                 h = std::max(h, height[size_t(child)]);
                 count = std::min(count + instances[size_t(child)], kMaxVoxInstances + 1);  // saturate
+                voxels = std::min(voxels + shown[size_t(child)], maxShown + 1);
             }
             height[size_t(current)] = h + 1;
             instances[size_t(current)] = count;
+            shown[size_t(current)] = voxels;
             state[size_t(current)] = kDone;
             path.pop_back();
         }
@@ -516,6 +523,10 @@ private:
         if (instances[root] > kMaxVoxInstances)
             throw FormatError("the scene graph expands to more than " + std::to_string(kMaxVoxInstances) +
                               " shape instances");
+        if (shown[root] > maxShown)
+            throw FormatError("the scene graph's shape instances show more than " + std::to_string(maxShown) +
+                              " voxels in all (the larger of " + std::to_string(kMaxVoxShownVoxels) +
+                              " and the voxels the models hold)");
     }
 
     int countFrames() const {

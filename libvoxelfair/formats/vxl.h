@@ -49,8 +49,10 @@ struct VxlModel {
 
 // Parses a whole .vxl file. Throws FormatError naming the problem (bad magic, including the
 // Ace of Spades maps that share the extension; truncation; offsets out of range; a run whose
-// repeated count differs; a run past the column height; zero sizes; ...). Never reads out of
-// bounds, and allocates in proportion to the file's size.
+// repeated count differs; a run past the column height; zero sizes; more columns than one per
+// eight bytes of the file or more voxels than one per two, which only sections or columns sharing
+// their span arrays or data can reach; ...). Never reads out of bounds, and allocates in
+// proportion to the file's size.
 VxlModel readVxl(const uint8_t *data, size_t size);
 
 // Serialises a model (used by the tests' fixtures and the bundled example). Sections are written

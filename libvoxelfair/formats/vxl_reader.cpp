@@ -13,6 +13,18 @@ namespace {
 
 using namespace vxl;
 
+// What a file may decode to. Without sharing, each column takes 8 bytes of span arrays and each
+// voxel 2 bytes of span data, so a file of n bytes holds fewer than n / 8 columns and n / 2
+// voxels. Sharing is legal (all is addressed by offsets) but no known writer does it (vxl.md
+// surveyed 263 files); unchecked, each 120-byte section re-reading another's span arrays and data
+// would add 65025 columns and 16.6 million voxels. The caps keep memory and time proportional to
+// the file.
+struct DecodeBudget {
+    explicit DecodeBudget(size_t fileSize) : fileSize(fileSize), columns(fileSize / 8), voxels(fileSize / 2) {}
+    size_t fileSize;
+    uint64_t columns, voxels;  // left
+};
+
 // The tailer fields that locate and size a section's body.
 struct SpanLayout {
     int32_t startOfs = 0, endOfs = 0, dataOfs = 0;
@@ -42,8 +54,9 @@ void checkMagic(const uint8_t *data, size_t size) {
 // Parses columns of one section into its volume; errors name the section and the column.
 class ColumnReader {
 public:
-    ColumnReader(const std::string &where, int sizeX, int sizeY, int sizeZ, uint8_t normalType)
+    ColumnReader(const std::string &where, int sizeX, int sizeY, int sizeZ, uint8_t normalType, DecodeBudget &budget)
         : where_(where),
+          budget_(budget),
           sizeZ_(sizeZ),
           maxNormal_(normalType == uint8_t(VxlNormalType::TiberianSun) ? kTiberianSunNormalCount - 1
                                                                        : kRedAlert2NormalCount - 1),
@@ -91,6 +104,12 @@ public:
                 throw error(x, y,
                             "run" + at() + " has count " + std::to_string(count) + " but its repeated count is " +
                                 std::to_string(repeated));
+            if (uint64_t(count) > budget_.voxels)
+                throw error(x, y,
+                            "the sections hold more than " + std::to_string(budget_.fileSize / 2) +
+                                " voxels, one per two bytes of the file: columns share their span data beyond what "
+                                "the reader accepts");
+            budget_.voxels -= uint64_t(count);
             z += skip;
             const uint8_t *voxel = column + pos + 2;
             for (int k = 0; k < count; ++k, ++z, voxel += 2) {
@@ -114,6 +133,7 @@ private:
     }
 
     const std::string &where_;
+    DecodeBudget &budget_;
     int sizeZ_;
     uint8_t maxNormal_;
     VoxelVolumeBuilder builder_;
@@ -122,7 +142,7 @@ private:
 
 // Reads a section's span arrays and columns from the body [bodyBegin, bodyEnd).
 void readSectionVoxels(const ByteReader &in, uint64_t bodyBegin, uint64_t bodyEnd, const SpanLayout &layout,
-                       const std::string &where, VxlSection &section) {
+                       const std::string &where, DecodeBudget &budget, VxlSection &section) {
     const uint64_t bodySize = bodyEnd - bodyBegin;
     const uint64_t columns = uint64_t(layout.sizeX) * uint64_t(layout.sizeY);
     const auto spanArray = [&](int32_t ofs, const char *name) {
@@ -133,13 +153,18 @@ void readSectionVoxels(const ByteReader &in, uint64_t bodyBegin, uint64_t bodyEn
     };
     const uint8_t *spanStart = spanArray(layout.startOfs, "spanStartOfs");
     const uint8_t *spanEnd = spanArray(layout.endOfs, "spanEndOfs");
+    if (columns > budget.columns)
+        throw FormatError(where + ": the sections hold more than " + std::to_string(budget.fileSize / 8) +
+                          " columns, one per eight bytes of the file: sections share their span arrays beyond what "
+                          "the reader accepts");
+    budget.columns -= columns;
     if (layout.dataOfs < 0 || uint64_t(layout.dataOfs) > bodySize)
         throw FormatError(where + ": spanDataOfs " + std::to_string(layout.dataOfs) +
                           " lies outside the body (bodySize " + std::to_string(bodySize) + ")");
     const uint64_t dataBegin = bodyBegin + uint64_t(layout.dataOfs);
 
     // Every column is read from its own spanStart: columns need not follow each other.
-    ColumnReader reader(where, layout.sizeX, layout.sizeY, layout.sizeZ, section.normalType);
+    ColumnReader reader(where, layout.sizeX, layout.sizeY, layout.sizeZ, section.normalType, budget);
     for (int y = 0; y < layout.sizeY; ++y)
         for (int x = 0; x < layout.sizeX; ++x) {
             const size_t i = 4 * (size_t(y) * size_t(layout.sizeX) + size_t(x));
@@ -187,6 +212,7 @@ VxlModel readVxl(const uint8_t *data, size_t size) {
         model.embeddedPalette.colours[i] = Rgb{embedded[3 * i], embedded[3 * i + 1], embedded[3 * i + 2]};
 
     model.sections.resize(sectionCount);
+    DecodeBudget budget(size);
     for (size_t s = 0; s < sectionCount; ++s) {
         VxlSection &section = model.sections[s];
         section.name = in.text(kHeaderBytes + kSectionHeaderBytes * s, kNameBytes, "section name");
@@ -214,7 +240,7 @@ VxlModel readVxl(const uint8_t *data, size_t size) {
                               std::to_string(layout.sizeY) + "x" + std::to_string(layout.sizeZ) +
                               " (tailer at byte offset " + std::to_string(t) + ")");
 
-        readSectionVoxels(in, bodyBegin, bodyEnd, layout, where, section);
+        readSectionVoxels(in, bodyBegin, bodyEnd, layout, where, budget, section);
     }
     return model;
 }
