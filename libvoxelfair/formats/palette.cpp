@@ -31,11 +31,12 @@ Palette readBinaryPal(const uint8_t *data) {
     return palette;
 }
 
-// Splits text into lines without their "\r\n" or "\n" ending.
-std::vector<std::string> splitLines(const uint8_t *data, size_t size) {
+// Splits text into at most `maxLines` lines without their "\r\n" or "\n" ending; the rest is
+// not looked at. (A string per line of a long file of newlines would cost 32 bytes per byte.)
+std::vector<std::string> splitLines(const uint8_t *data, size_t size, size_t maxLines) {
     std::vector<std::string> lines;
     std::string line;
-    for (size_t i = 0; i < size; ++i) {
+    for (size_t i = 0; i < size && lines.size() < maxLines; ++i) {
         const char c = char(data[i]);
         if (c == '\n') {
             if (!line.empty() && line.back() == '\r') line.pop_back();
@@ -46,8 +47,13 @@ std::vector<std::string> splitLines(const uint8_t *data, size_t size) {
         }
     }
     if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (!line.empty()) lines.push_back(std::move(line));
+    if (!line.empty() && lines.size() < maxLines) lines.push_back(std::move(line));
     return lines;
+}
+
+// A line of the file for a message, cut short: a corrupt file may hold one long line.
+std::string quoted(const std::string &text) {
+    return "\"" + (text.size() <= 32 ? text : text.substr(0, 32) + "...") + "\"";
 }
 
 // Parses whitespace-separated decimal integers in [0, maxValue]; false on anything else.
@@ -71,12 +77,12 @@ bool parseInts(const std::string &line, std::vector<int> &out, int maxValue) {
 // JASC-PAL: "JASC-PAL", "0100", the colour count (1..256), then one "r g b" line per colour
 // (8 bits per channel). Entries past the count stay black.
 Palette readJascPal(const uint8_t *data, size_t size) {
-    const std::vector<std::string> lines = splitLines(data, size);
+    const std::vector<std::string> lines = splitLines(data, size, 3 + 256);
     if (lines.size() < 3 || lines[0] != "JASC-PAL" || lines[1] != "0100")
         throw FormatError("JASC-PAL palette: expected \"JASC-PAL\" then the version \"0100\" on lines 1 and 2");
     std::vector<int> values;
     if (!parseInts(lines[2], values, 256) || values.size() != 1 || values[0] < 1)
-        throw FormatError("JASC-PAL palette: line 3 must hold the colour count (1 to 256), got \"" + lines[2] + "\"");
+        throw FormatError("JASC-PAL palette: line 3 must hold the colour count (1 to 256), got " + quoted(lines[2]));
     const size_t count = size_t(values[0]);
     if (lines.size() < 3 + count)
         throw FormatError("JASC-PAL palette: " + std::to_string(count) + " colours announced but only " +
@@ -86,7 +92,7 @@ Palette readJascPal(const uint8_t *data, size_t size) {
         const std::string &line = lines[3 + i];
         if (!parseInts(line, values, 255) || values.size() != 3)
             throw FormatError("JASC-PAL palette: line " + std::to_string(4 + i) +
-                              " must be three values 0..255 (\"r g b\"), got \"" + line + "\"");
+                              " must be three values 0..255 (\"r g b\"), got " + quoted(line));
         palette.colours[i] = Rgb{uint8_t(values[0]), uint8_t(values[1]), uint8_t(values[2])};
     }
     return palette;

@@ -7,13 +7,13 @@ namespace voxelfair {
 
 static void appendPart(SceneSurface &out, const BoundarySurface &surface, const PlacedVolume &part,
                        const Palette &palette) {
+    // No reserve per part: reserving exactly would reallocate on every part, which makes a scene
+    // of many small parts (2^20 instances) quadratic. Growth by doubling stays linear.
     const uint32_t base = uint32_t(out.positions.size());
-    out.positions.reserve(out.positions.size() + surface.positions.size());
     for (const glm::vec3 &p : surface.positions) out.positions.push_back(glm::vec3(part.toModel * glm::vec4(p, 1.0f)));
 
     // A mirroring placement turns outward counter-clockwise quads inside out: undo it.
     const bool mirrored = glm::determinant(glm::mat3(part.toModel)) < 0.0f;
-    out.quads.reserve(out.quads.size() + surface.quads.size());
     for (size_t q = 0; q < surface.quadCount(); ++q) {
         const uint32_t *c = &surface.quads[4 * q];
         if (mirrored)
