@@ -1,5 +1,6 @@
 #include "ply_reader.h"
 
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -76,8 +77,12 @@ PlyMesh readAsciiPly(const std::string &path) {
                     }
                     continue;
                 }
-                double v = 0;
-                values >> v;
+                // strtod, unlike >>, reads "nan" and "inf" as MeshLab writes them.
+                std::string token;
+                values >> token;
+                char *end = nullptr;
+                const double v = std::strtod(token.c_str(), &end);
+                if (token.empty() || *end != '\0') values.setstate(std::ios::failbit);
                 if (e.name == "vertex") {
                     if (prop == "x") p[0] = float(v);
                     if (prop == "y") p[1] = float(v);
