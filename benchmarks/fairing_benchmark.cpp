@@ -125,8 +125,8 @@ BENCHMARK(BM_VcgTaubin10)->Unit(benchmark::kMillisecond);
 double cpuMilliseconds() { return 1000.0 * double(std::clock()) / CLOCKS_PER_SEC; }
 
 // Arguments: the second mode's passes and positionSweeps (the first pair is its default). Its
-// time here reads lower than BM_FairConstrainedCall's: in this loop the memory Taubin has just
-// freed serves the next call, there each call faults its ~20 MB of work arrays in anew.
+// time here reads about 1 ms higher than BM_FairConstrainedCall's: Taubin, run in between, leaves
+// the caches cold, and some of the work memory, given back to the system, is faulted in again.
 void BM_SpeedRatios(benchmark::State &state) {
     const SphereMesh &m = mesh();
     ConstrainedFairingOptions options;

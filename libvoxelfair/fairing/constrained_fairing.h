@@ -34,9 +34,10 @@
 // 15 spheres of radius 6-24, 3 tori, 12 capped cylinders of radius 3-6, 4 boxes): RMS distance
 // to the true surface at most 0.058 voxel on spheres, 0.068 on tori, 0.136 on cylinders, exactly
 // 0 on boxes; volume within 0.8% for spheres of radius >= 12 and tori. Cost on a 100k-vertex
-// voxel sphere (benchmarks/fairing_benchmark): 30-37 ms, 2.1-2.6 times less than vcglib's Taubin
-// (10 steps), short of the 5 times aimed at; passes = 1 takes about 19 ms (3.8 times less) for
-// worst RMS 0.060 on spheres, 0.077 on tori, 0.146 on cylinders.
+// voxel sphere (benchmarks/fairing_benchmark, one thread): 13.5-15 ms a call, 5.0-5.4 times less
+// than vcglib's Taubin (10 steps) run in the same loop; the first call in a process also maps its
+// ~19 MB of work memory (about 20 ms). passes = 1 takes about 10 ms (7 times less) for worst RMS
+// 0.060 on spheres, 0.077 on tori, 0.146 on cylinders.
 #pragma once
 
 #include "fairing/lanczos_fairing.h"  // FairingStatus
