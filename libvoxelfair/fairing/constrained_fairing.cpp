@@ -1251,15 +1251,10 @@ ConstrainedFairingReport fairConstrained(glm::vec3 *positions, size_t vertexCoun
         return finish(FairingStatus::InvalidOptions,
                       "passes, positionSweeps >= 0, normalLevels in [0, 8], stepReach >= 1, featureReach >= 0, "
                       "cellHalfWidth > 0, creaseAngle in (0, 180), voxelSize finite and >= 0");
-    if (PolygonMeshError e = validatePolygons(vertexCount, polygonOffsets, polygonIndices, polygonCount);
-        e != PolygonMeshError::None)
-        return finish(FairingStatus::InvalidMesh, describe(e));
-    if (!positions && vertexCount > 0)
-        return finish(FairingStatus::InvalidMesh, "positions missing (null)");
-    if (vertexCount == 0 || polygonCount == 0)
-        return finish(FairingStatus::NothingToDo, "no vertex or no polygon");
-    if (options.passes == 0)
-        return finish(FairingStatus::NothingToDo, "zero passes requested");
+    if (const auto [status, message] = checkFairingInput(positions, vertexCount, polygonOffsets, polygonIndices,
+                                                         polygonCount, options.passes);
+        status != FairingStatus::Ok)
+        return finish(status, message);
 
     bool allQuads = polygonOffsets[polygonCount] == 4 * polygonCount;
     for (size_t p = 0; allQuads && p < polygonCount; ++p)

@@ -54,6 +54,22 @@ FairingPassStats lanczosFairingPass(const glm::vec3 *in, glm::vec3 *out, const C
     return stats;
 }
 
+std::pair<FairingStatus, const char *> checkFairingInput(const glm::vec3 *positions, size_t vertexCount,
+                                                         const uint32_t *polygonOffsets,
+                                                         const uint32_t *polygonIndices, size_t polygonCount,
+                                                         int passes) {
+    if (PolygonMeshError e = validatePolygons(vertexCount, polygonOffsets, polygonIndices, polygonCount);
+        e != PolygonMeshError::None)
+        return {FairingStatus::InvalidMesh, describe(e)};
+    if (!positions && vertexCount > 0)
+        return {FairingStatus::InvalidMesh, "positions missing (null)"};
+    if (vertexCount == 0 || polygonCount == 0)
+        return {FairingStatus::NothingToDo, "no vertex or no polygon"};
+    if (passes == 0)
+        return {FairingStatus::NothingToDo, "zero passes requested"};
+    return {FairingStatus::Ok, "ok"};
+}
+
 FairingReport fairModifiedLanczos(glm::vec3 *positions, size_t vertexCount, const uint32_t *polygonOffsets,
                                   const uint32_t *polygonIndices, size_t polygonCount,
                                   const uint8_t *vertexSelected, const LanczosFairingOptions &options) {
@@ -66,15 +82,10 @@ FairingReport fairModifiedLanczos(glm::vec3 *positions, size_t vertexCount, cons
     if (!std::isfinite(options.lambda) || options.passes < 0 || !std::isfinite(options.voxelSize) ||
         options.voxelSize < 0.0f)
         return finish(FairingStatus::InvalidOptions, "lambda and voxelSize must be finite, voxelSize and passes >= 0");
-    if (PolygonMeshError e = validatePolygons(vertexCount, polygonOffsets, polygonIndices, polygonCount);
-        e != PolygonMeshError::None)
-        return finish(FairingStatus::InvalidMesh, describe(e));
-    if (!positions && vertexCount > 0)
-        return finish(FairingStatus::InvalidMesh, "positions missing (null)");
-    if (vertexCount == 0 || polygonCount == 0)
-        return finish(FairingStatus::NothingToDo, "no vertex or no polygon");
-    if (options.passes == 0)
-        return finish(FairingStatus::NothingToDo, "zero passes requested");
+    if (const auto [status, message] = checkFairingInput(positions, vertexCount, polygonOffsets, polygonIndices,
+                                                         polygonCount, options.passes);
+        status != FairingStatus::Ok)
+        return finish(status, message);
 
     for (size_t v = 0; v < vertexCount; ++v)
         if (!std::isfinite(positions[v].x) || !std::isfinite(positions[v].y) || !std::isfinite(positions[v].z))

@@ -10,6 +10,8 @@
 // axis, a convex edge 0.268 on its two axes, a flat interior vertex not at all.
 #pragma once
 
+#include <utility>
+
 #include "fairing/polygon_adjacency.h"
 
 #include <cstddef>
@@ -34,6 +36,13 @@ enum class FairingStatus {
     InvalidMesh,     // bad offsets or indices: positions untouched
     InvalidOptions,  // non-finite or negative option: positions untouched
 };
+
+// The input checks both fairing modes make before touching anything: valid polygons, positions
+// present, something to do. Returns Ok, or the status and a static message saying why not.
+std::pair<FairingStatus, const char *> checkFairingInput(const glm::vec3 *positions, size_t vertexCount,
+                                                         const uint32_t *polygonOffsets,
+                                                         const uint32_t *polygonIndices, size_t polygonCount,
+                                                         int passes);
 
 struct FairingReport {
     FairingStatus status = FairingStatus::Ok;
