@@ -74,7 +74,9 @@ bool FilterVoxelfairPlugin::applyLanczosFairing(MeshModel &m, const RichParamete
     const bool selectedOnly = parameters.getBool("Selected");
 
     if (cb) cb(10, "Reading polygons");
-    PolygonArrays arrays = polygonArrays(m.cm);
+    // Kept between runs (see polygonArrays); each run overwrites it.
+    thread_local PolygonArrays arrays;
+    polygonArrays(m.cm, arrays);
     if (cb) cb(40, "Fairing");
     FairingSummary summary;
     // Parts of an import may have different voxel sizes: detect and fair each on its own.

@@ -141,6 +141,18 @@ private:
 
 PolygonArrays polygonArrays(const CMeshO &mesh) {
     PolygonArrays out;
+    polygonArrays(mesh, out);
+    return out;
+}
+
+void polygonArrays(const CMeshO &mesh, PolygonArrays &out) {
+    out.positions.clear();
+    out.vertexOf.clear();
+    out.selected.clear();
+    out.polygonOffsets.clear();
+    out.polygonFace.clear();
+    out.polygonIndices.clear();
+    out.nonFiniteVertices = 0;
     out.positions.reserve(size_t(mesh.vn));
     out.vertexOf.reserve(size_t(mesh.vn));
     out.selected.reserve(size_t(mesh.vn));
@@ -148,7 +160,8 @@ PolygonArrays polygonArrays(const CMeshO &mesh) {
     out.polygonFace.reserve(size_t(mesh.fn));
     out.polygonIndices.reserve(2 * size_t(mesh.fn) + 2);  // quads: 4 indices per 2 triangles
 
-    std::vector<uint32_t> arrayIndex(mesh.vert.size(), kNone);
+    thread_local std::vector<uint32_t> arrayIndex;
+    arrayIndex.assign(mesh.vert.size(), kNone);
     for (size_t v = 0; v < mesh.vert.size(); ++v) {
         const CVertexO &vert = mesh.vert[v];
         if (vert.IsD()) continue;
@@ -160,7 +173,6 @@ PolygonArrays polygonArrays(const CMeshO &mesh) {
         out.selected.push_back(vert.IsS() ? 1 : 0);
     }
     PolygonGatherer(mesh, arrayIndex, out).run();
-    return out;
 }
 
 void writePositions(const PolygonArrays &arrays, const std::vector<glm::vec3> &positions, CMeshO &mesh) {

@@ -27,6 +27,10 @@ struct PolygonArrays {
 
 PolygonArrays polygonArrays(const CMeshO &mesh);
 
+// The same into `out`, reusing its memory (a filter keeps one between runs: fresh multi-megabyte
+// arrays cost more in first-touch page faults than the smoothing itself).
+void polygonArrays(const CMeshO &mesh, PolygonArrays &out);
+
 // Writes `positions` back to the vertices they came from.
 void writePositions(const PolygonArrays &arrays, const std::vector<glm::vec3> &positions, CMeshO &mesh);
 

@@ -97,13 +97,16 @@ FairingReport fairModifiedLanczos(glm::vec3 *positions, size_t vertexCount, cons
     if (!(report.voxelSize > 0.0f))
         return finish(FairingStatus::NothingToDo, "no polygon edge of non-zero finite length to take the voxel size from");
 
-    CsrAdjacency neighbours;
+    // The work arrays are kept from call to call (per thread): a filter runs once per click, and
+    // fresh multi-megabyte arrays cost more in first-touch page faults than the pass itself.
+    thread_local CsrAdjacency neighbours;
+    thread_local std::vector<glm::vec3> previous;
     if (PolygonMeshError e = buildVertexNeighbours(vertexCount, polygonOffsets, polygonIndices, polygonCount, neighbours);
         e != PolygonMeshError::None)
         return finish(FairingStatus::InvalidMesh, describe(e));
 
     // Jacobi: every vertex of a pass reads the positions from before that pass.
-    std::vector<glm::vec3> previous(positions, positions + vertexCount);
+    previous.assign(positions, positions + vertexCount);
     for (int pass = 0; pass < options.passes; ++pass) {
         if (pass > 0)
             std::copy(positions, positions + vertexCount, previous.begin());

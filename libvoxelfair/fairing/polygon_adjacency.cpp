@@ -21,8 +21,7 @@ void compactRows(CsrAdjacency &csr, const std::vector<uint32_t> &rowEnd) {
             csr.items[write++] = csr.items[i];
     }
     csr.offsets[rows] = write;
-    csr.items.resize(write);
-    csr.items.shrink_to_fit();
+    csr.items.resize(write);  // capacity kept: callers may reuse `csr` for the next mesh
 }
 
 // Turns per-row counts (stored in offsets[1..]) into start offsets; fails past 32 bits.
@@ -76,7 +75,9 @@ PolygonMeshError validatePolygons(size_t vertexCount, const uint32_t *polygonOff
 PolygonMeshError buildVertexNeighbours(size_t vertexCount, const uint32_t *polygonOffsets,
                                        const uint32_t *polygonIndices, size_t polygonCount,
                                        CsrAdjacency &out) {
-    out = {};
+    // Cleared, not freed: a caller that keeps `out` reuses its memory on the next build.
+    out.offsets.clear();
+    out.items.clear();
     if (PolygonMeshError e = validatePolygons(vertexCount, polygonOffsets, polygonIndices, polygonCount);
         e != PolygonMeshError::None)
         return e;
