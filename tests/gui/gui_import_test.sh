@@ -10,8 +10,10 @@ mkdir -p "$out"
 work=$(mktemp -d /tmp/voxelfair-gui.XXXXXX)
 chmod 700 "$work"
 
-for n in $(seq 71 140); do [ -e "/tmp/.X$n-lock" ] || { display=":$n"; break; }; done
-Xvfb "$display" -screen 0 1280x800x24 -nolisten tcp >"$work/xvfb.log" 2>&1 &
+# Xvfb picks a free display itself and writes its number once it accepts connections
+# (-displayfd), so neither a display taken by a parallel test nor a slow start under load can
+# leave MeshLab without a screen.
+Xvfb -displayfd 3 -screen 0 1280x800x24 -nolisten tcp 3>"$work/display" >"$work/xvfb.log" 2>&1 &
 xvfb=$!
 meshlab_pid=
 cleanup() {
@@ -21,16 +23,30 @@ cleanup() {
   rm -rf "$work"
 }
 trap cleanup EXIT
-export DISPLAY=$display XDG_CONFIG_HOME=$work XDG_RUNTIME_DIR=$work
-for _ in $(seq 50); do xdpyinfo >/dev/null 2>&1 && break; sleep 0.1; done
+for _ in $(seq 300); do
+  [ -s "$work/display" ] && break
+  kill -0 "$xvfb" 2>/dev/null || break
+  sleep 0.1
+done
+if [ ! -s "$work/display" ]; then
+  echo "FAIL: Xvfb did not start within 30 s"; cat "$work/xvfb.log"; exit 1
+fi
+export DISPLAY=":$(tr -dc 0-9 <"$work/display")" XDG_CONFIG_HOME=$work XDG_RUNTIME_DIR=$work
+if ! xdpyinfo >/dev/null 2>&1; then
+  echo "FAIL: Xvfb reported $DISPLAY but it does not answer"; cat "$work/xvfb.log"; exit 1
+fi
 
 "$meshlab" "$model" >"$work/meshlab.log" 2>&1 &
 meshlab_pid=$!
 
-# wait_for SECONDS COMMAND...: polls until COMMAND succeeds.
+# wait_for SECONDS COMMAND...: polls until COMMAND succeeds; gives up early if MeshLab died.
 wait_for() {
   local seconds=$1; shift
-  for _ in $(seq $((seconds * 5))); do "$@" >/dev/null 2>&1 && return 0; sleep 0.2; done
+  for _ in $(seq $((seconds * 5))); do
+    "$@" >/dev/null 2>&1 && return 0
+    kill -0 "$meshlab_pid" 2>/dev/null || { "$@" >/dev/null 2>&1; return; }
+    sleep 0.2
+  done
   return 1
 }
 
