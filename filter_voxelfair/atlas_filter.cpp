@@ -148,6 +148,18 @@ bool FilterVoxelfairPlugin::applyTextureAtlas(MeshModel &m, const RichParameterL
                .arg(atlas.texture.note.empty() ? QString() : QString(" (%1)").arg(QString::fromStdString(atlas.texture.note)))
                .arg(path)
                .arg(timer.elapsed()));
+    if (atlas.charts.separatedFaces > 0)
+        report(QString("Texture Atlas: %1 faces too thin for the texel grid got charts of their own, so every face keeps "
+                       "its voxel colour")
+                   .arg(atlas.charts.separatedFaces));
+    if (atlas.texture.source == BakeSource::FaceColours && !atlas.crispGuaranteed)
+        report(QString("Texture Atlas: warning: at %1 texels per voxel some faces are too thin to keep their voxel "
+                       "colour in every texel (%2 of %3 faces would need charts of their own, more than the %4% "
+                       "allowed); raise Texels per voxel for exact crisp colours")
+                   .arg(atlas.layout.texelsPerUnit * double(voxelSize), 0, 'g', 3)
+                   .arg(atlas.crowded.crowdedFaces)
+                   .arg(atlas.charts.faceCount())
+                   .arg(100.0 * options.maxSeparatedShare, 0, 'g', 3));
     if (atlas.charts.nonManifoldEdges > 0 || atlas.charts.degenerateFaces > 0)
         report(QString("Texture Atlas: %1 non-manifold edges used as chart borders, %2 degenerate faces given their own "
                        "texel")

@@ -179,7 +179,7 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
     // at least that thick are untouched: their interior points lie over their own centre texels.
     if (out.source == BakeSource::FaceColours) {
         std::vector<std::pair<double, uint32_t>> thin;
-        glm::dvec2 points[4];
+        glm::dvec2 points[4] = {};
         for (size_t f = 0; f < mesh.faceCount; ++f) {
             load(f);
             const double inradius = faceInteriorPoints(q, points);

@@ -1,5 +1,6 @@
 // Section 4.5 of the paper, "Texture atlas extraction", as one call: charts (charts.h), packing
-// (packing.h), baked diffuse texture (bake.h). Like xatlas the stages can also be run one by
+// (packing.h), baked diffuse texture (bake.h); for crisp colours, faces too thin for the texel
+// grid are separated between charts and packing (crowded_faces.h). Like xatlas the stages can also be run one by
 // one, e.g. to repack or rebake with other options without recomputing the charts.
 //
 //   AtlasMesh mesh;  mesh.positions = ...; mesh.triangles = ...; mesh.faceColours = ...;
@@ -11,6 +12,7 @@
 #include "atlas/atlas_mesh.h"
 #include "atlas/bake.h"
 #include "atlas/charts.h"
+#include "atlas/crowded_faces.h"
 #include "atlas/packing.h"
 
 #include <string>
@@ -21,12 +23,21 @@ struct AtlasOptions {
     ChartOptions charts;
     PackOptions pack;
     BakeOptions bake;
+    // Crisp bakes only: give crowded thin faces their own charts (crowded_faces.h), so every
+    // interior point of every face reads its face's colour, unless more than this share of the
+    // faces would need it (a texture too coarse for the model). 0 turns it off.
+    double maxSeparatedShare = 0.1;
 };
 
 struct TextureAtlas {
     AtlasCharts charts;
     AtlasLayout layout;
     AtlasTexture texture;
+    // The last separation of crowded faces, and whether every interior point of every face is
+    // sure to read its face's colour (crisp bake, nothing over the budget, and the packing
+    // density no lower than the one separated for).
+    CrowdedFaces crowded;
+    bool crispGuaranteed = false;
 
     // The first failing stage's status and message (stages after a failure return empty).
     AtlasStatus status() const { return texture.status; }

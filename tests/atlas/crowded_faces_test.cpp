@@ -1,0 +1,195 @@
+// Crisp colours for every face (crowded_faces.h): on families of voxel meshes faired by the
+// paper's operator (the slivers it squeezes are the hard case), smoothed by Taubin, or jittered
+// into needles, every interior point of every face reads its face's colour, at every density
+// that the texture can resolve, in both packers and with a fixed texture size.
+#include "atlas/atlas_measures.h"
+#include "atlas/atlas_test_meshes.h"
+#include "atlas/texture_atlas.h"
+#include "fairing/lanczos_fairing.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+using namespace voxelfair;
+using namespace voxelfair::atlastest;
+
+namespace {
+
+// The paper's fairing (one pass, lambda 4/3) on a voxel surface: quad k is triangles 2k, 2k+1.
+TestMesh paperFaired(TestMesh m, int passes = 1) {
+    const size_t quads = m.faceCount() / 2;
+    std::vector<uint32_t> offsets(quads + 1), indices(4 * quads);
+    for (size_t q = 0; q < quads; ++q) {
+        offsets[q] = uint32_t(4 * q);
+        const uint32_t *t = &m.triangles[6 * q];  // (a, b, c), (a, c, d)
+        indices[4 * q] = t[0], indices[4 * q + 1] = t[1], indices[4 * q + 2] = t[2], indices[4 * q + 3] = t[5];
+    }
+    offsets[quads] = uint32_t(4 * quads);
+    LanczosFairingOptions options;
+    options.passes = passes;
+    options.voxelSize = 1.0f;
+    const FairingReport report =
+        fairModifiedLanczos(m.positions.data(), m.positions.size(), offsets.data(), indices.data(), quads, nullptr, options);
+    EXPECT_EQ(report.status, FairingStatus::Ok) << report.message;
+    m.name += " paper" + std::to_string(passes);
+    return m;
+}
+
+// Every vertex moved by up to `amount` voxel on each axis: needles, slivers, faces at all angles.
+TestMesh jittered(TestMesh m, float amount, uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> unit(-amount, amount);
+    for (glm::vec3 &p : m.positions)
+        p += glm::vec3(unit(rng), unit(rng), unit(rng));
+    m.name += " jittered";
+    return m;
+}
+
+std::vector<TestMesh> families() {
+    std::vector<TestMesh> out;
+    out.push_back(paperFaired(voxelSphere(9)));
+    out.push_back(paperFaired(voxelBox(6, 4, 3)));
+    out.push_back(paperFaired(voxelTorus(8, 3)));
+    out.push_back(paperFaired(voxelBlob(8, 3)));
+    out.push_back(paperFaired(voxelBlob(7, 4), 3));
+    out.push_back(smoothed(voxelSphere(8)));
+    out.push_back(smoothed(voxelBlob(7, 1), 30));
+    out.push_back(jittered(voxelSphere(6), 0.3f, 7));
+    out.push_back(jittered(voxelBox(4, 4, 4), 0.45f, 8));
+    return out;
+}
+
+size_t wrongSamples(const TestMesh &mesh, const TextureAtlas &atlas) {
+    const ColourFidelity f = measureColourFidelity(mesh.view(), atlas.layout, atlas.texture);
+    return f.samples - f.nearestMatches;
+}
+
+}  // namespace
+
+TEST(CrowdedFaces, EveryInteriorPointKeepsItsColourOnEveryFamily) {
+    for (const TestMesh &mesh : families())
+        for (float density : {8.0f, 12.0f, 16.0f})
+            for (PackMode mode : {PackMode::Tight, PackMode::Paper}) {
+                SCOPED_TRACE(mesh.name + " at " + std::to_string(density) + " texels per voxel, " + toString(mode));
+                AtlasOptions options;
+                options.pack.texelsPerUnit = density;
+                options.pack.mode = mode;
+                const TextureAtlas atlas = buildTextureAtlas(mesh.view(), options);
+                ASSERT_EQ(atlas.status(), AtlasStatus::Ok) << atlas.message();
+                EXPECT_TRUE(atlas.crispGuaranteed) << atlas.crowded.crowdedFaces << " crowded faces";
+                EXPECT_EQ(wrongSamples(mesh, atlas), 0u) << atlas.charts.separatedFaces << " faces separated";
+                if (density == 8.0f && mode == PackMode::Tight)
+                    std::printf("%s: %zu of %zu faces thin at 8 texels per voxel, %zu separated\n", mesh.name.c_str(),
+                                atlas.crowded.thinFaces, mesh.faceCount(), atlas.charts.separatedFaces);
+                // The separation keeps what every atlas must satisfy.
+                const AtlasMeasures m = measureAtlas(mesh.view(), atlas.charts, atlas.layout);
+                EXPECT_EQ(m.overlappingChartTexels, 0u);
+                EXPECT_EQ(m.overlappingCentres, 0u);
+                EXPECT_EQ(m.facesWithoutUvArea, 0u);
+                EXPECT_LE(m.maxStretch, 1.0 + 1e-3);
+                EXPECT_LE(m.maxInverseStretch, 1.0 / 0.7 + 1e-3);
+            }
+}
+
+// Without the separation the same atlases lose samples: the test above is not vacuous.
+TEST(CrowdedFaces, WithoutSeparationFairedMeshesLoseSamples) {
+    size_t lost = 0, separated = 0;
+    for (const TestMesh &mesh : families()) {
+        AtlasOptions options;
+        options.pack.texelsPerUnit = 8;
+        options.maxSeparatedShare = 0;
+        const TextureAtlas plain = buildTextureAtlas(mesh.view(), options);
+        EXPECT_EQ(plain.charts.separatedFaces, 0u);
+        EXPECT_FALSE(plain.crispGuaranteed);
+        lost += wrongSamples(mesh, plain);
+        options.maxSeparatedShare = 0.1;
+        separated += buildTextureAtlas(mesh.view(), options).charts.separatedFaces;
+    }
+    EXPECT_GT(lost, 0u);
+    EXPECT_GT(separated, 0u);
+}
+
+// A fixed texture size sets the density while packing: the charts are separated for the
+// density found, and the guarantee still holds.
+TEST(CrowdedFaces, FixedTextureSizeIsSeparatedForTheDensityFound) {
+    for (const TestMesh &mesh : {paperFaired(voxelSphere(9)), jittered(voxelBox(4, 4, 4), 0.45f, 8)}) {
+        SCOPED_TRACE(mesh.name);
+        AtlasOptions options;
+        options.pack.textureSize = 512;
+        const TextureAtlas atlas = buildTextureAtlas(mesh.view(), options);
+        ASSERT_EQ(atlas.status(), AtlasStatus::Ok) << atlas.message();
+        EXPECT_EQ(atlas.layout.size, 512);
+        EXPECT_TRUE(atlas.crispGuaranteed);
+        EXPECT_EQ(wrongSamples(mesh, atlas), 0u);
+    }
+}
+
+// Each separated face is a chart of its own, projected onto its own plane (stretch 1), and the
+// charts it left still hold all their other faces.
+TEST(CrowdedFaces, SeparatedFacesAreOneFaceChartsOnTheirOwnPlane) {
+    const TestMesh mesh = paperFaired(voxelBlob(7, 4), 3);
+    AtlasCharts charts = computeCharts(mesh.view());
+    const AtlasCharts before = charts;
+    const CrowdedFaces crowded = separateCrowdedFaces(mesh.view(), charts, {8.0, 0.1});
+    ASSERT_GT(crowded.separatedFaces, 0u);
+    EXPECT_LE(crowded.separatedFaces, crowded.thinFaces);
+    EXPECT_EQ(charts.separatedFaces, crowded.separatedFaces);
+    EXPECT_EQ(charts.faceCount(), mesh.faceCount());
+    EXPECT_EQ(charts.chartFaces.size(), mesh.faceCount());
+    for (size_t c = 0; c < charts.chartCount(); ++c) {
+        const uint32_t first = charts.chartFirstFace[c], end = charts.chartFirstFace[c + 1];
+        ASSERT_LT(first, end) << "empty chart " << c;
+        for (uint32_t i = first; i < end; ++i)
+            EXPECT_EQ(charts.faceChart[charts.chartFaces[i]], c);
+    }
+    // The separated faces' charts come after the others (and before degenerate faces', none here).
+    ASSERT_EQ(charts.degenerateFaces, 0u);
+    for (size_t c = charts.chartCount() - crowded.separatedFaces; c < charts.chartCount(); ++c) {
+        ASSERT_EQ(charts.chartFirstFace[c + 1] - charts.chartFirstFace[c], 1u);
+        const uint32_t f = charts.chartFaces[charts.chartFirstFace[c]];
+        EXPECT_GT(before.chartFirstFace[before.faceChart[f] + 1] - before.chartFirstFace[before.faceChart[f]], 1u)
+            << "a face alone in its chart is never crowded";
+        const glm::vec3 a = mesh.positions[mesh.triangles[3 * f]], b = mesh.positions[mesh.triangles[3 * f + 1]],
+                        d = mesh.positions[mesh.triangles[3 * f + 2]];
+        EXPECT_NEAR(glm::dot(glm::normalize(glm::cross(b - a, d - a)), charts.chartAxis[c]), 1.0f, 1e-4f);
+    }
+    EXPECT_GT(charts.chartCount(), before.chartCount());
+    EXPECT_LE(charts.chartCount(), before.chartCount() + crowded.separatedFaces);
+}
+
+// 2 texels per voxel cannot keep pixel art: nearly every face is crowded, far over the budget,
+// so nothing is separated and the atlas says so.
+TEST(CrowdedFaces, TooCoarseATextureIsReportedNotShredded) {
+    const TestMesh mesh = paperFaired(voxelSphere(9));
+    AtlasOptions options;
+    options.pack.texelsPerUnit = 2;
+    const TextureAtlas atlas = buildTextureAtlas(mesh.view(), options);
+    ASSERT_EQ(atlas.status(), AtlasStatus::Ok);
+    EXPECT_TRUE(atlas.crowded.overBudget());
+    EXPECT_GT(atlas.crowded.crowdedFaces, mesh.faceCount() / 10);
+    EXPECT_EQ(atlas.charts.separatedFaces, 0u);
+    EXPECT_EQ(atlas.charts.chartCount(), computeCharts(mesh.view()).chartCount());
+    EXPECT_FALSE(atlas.crispGuaranteed);
+}
+
+// One colour crowds nothing, however coarse; smoothed (vertex) colours are not crisp at all.
+TEST(CrowdedFaces, OneColourOrASmoothedBakeSeparatesNothing) {
+    TestMesh mesh = paperFaired(voxelSphere(9));
+    for (glm::u8vec3 &c : mesh.faceColours)
+        c = {90, 120, 30};
+    AtlasOptions options;
+    options.pack.texelsPerUnit = 2;
+    TextureAtlas atlas = buildTextureAtlas(mesh.view(), options);
+    EXPECT_EQ(atlas.charts.separatedFaces, 0u);
+    EXPECT_TRUE(atlas.crispGuaranteed);
+    EXPECT_EQ(wrongSamples(mesh, atlas), 0u);
+
+    const TestMesh art = paperFaired(voxelSphere(9));
+    options.pack.texelsPerUnit = 8;
+    options.bake.source = BakeSource::VertexColours;
+    atlas = buildTextureAtlas(art.view(), options);
+    EXPECT_EQ(atlas.charts.separatedFaces, 0u);
+    EXPECT_EQ(atlas.crowded.thinFaces, 0u);
+    EXPECT_FALSE(atlas.crispGuaranteed);
+}
