@@ -64,6 +64,27 @@ void BM_Charts(benchmark::State &state) {
 }
 BENCHMARK(BM_Charts)->Unit(benchmark::kMillisecond);
 
+// Crisp colours' search for crowded thin faces (crowded_faces.h) on the Taubin10 sphere: at 8
+// texels per voxel (few thin faces; the filter's default) and at 2, where nearly every face is
+// thin and crowded and the search stops at the budget.
+void BM_SeparateCrowdedFaces(benchmark::State &state, double texelsPerUnit) {
+    const TestMesh &mesh = sphere(10);
+    const AtlasCharts charts = computeCharts(mesh.view());
+    CrowdedFaces crowded;
+    for (auto _ : state) {
+        state.PauseTiming();
+        AtlasCharts copy = charts;
+        state.ResumeTiming();
+        crowded = separateCrowdedFaces(mesh.view(), copy, {texelsPerUnit, 0.1});
+        benchmark::DoNotOptimize(copy.chartFaces.data());
+    }
+    state.counters["thin"] = double(crowded.thinFaces);
+    state.counters["crowded"] = double(crowded.crowdedFaces);
+    state.counters["separated"] = double(crowded.separatedFaces);
+}
+BENCHMARK_CAPTURE(BM_SeparateCrowdedFaces, 8TexelsPerVoxel, 8.0)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SeparateCrowdedFaces, 2TexelsPerVoxel, 2.0)->Unit(benchmark::kMillisecond);
+
 void BM_Pack(benchmark::State &state) {
     const TestMesh &mesh = sphere(10);
     const AtlasCharts charts = computeCharts(mesh.view());

@@ -153,9 +153,9 @@ bool FilterVoxelfairPlugin::applyTextureAtlas(MeshModel &m, const RichParameterL
                        "its voxel colour")
                    .arg(atlas.charts.separatedFaces));
     if (atlas.texture.source == BakeSource::FaceColours && !atlas.crispGuaranteed)
-        report(QString("Texture Atlas: warning: at %1 texels per voxel some faces are too thin to keep their voxel "
-                       "colour in every texel (%2 of %3 faces would need charts of their own, more than the %4% "
-                       "allowed); raise Texels per voxel for exact crisp colours")
+        report(QString("Texture Atlas: warning: at %1 texels per voxel %2 of %3 faces are too thin to be sure of "
+                       "their voxel colour in every texel (separating them would take more than %4% of the faces); "
+                       "raise Texels per voxel for exact crisp colours")
                    .arg(atlas.layout.texelsPerUnit * double(voxelSize), 0, 'g', 3)
                    .arg(atlas.crowded.crowdedFaces)
                    .arg(atlas.charts.faceCount())

@@ -1,5 +1,6 @@
 // Prints the measures of the section 4.5 texture atlas on test meshes, both packers:
-// packing efficiency, overlaps, UV areas, stretch, crisp colour fidelity and timings.
+// packing efficiency, overlaps, UV areas, stretch, crisp colour fidelity, faces separated for
+// crisp colours (crowded_faces.h) and the whole atlas' time (buildTextureAtlas).
 //
 //   atlas_report                  the reference mesh: Taubin-smoothed voxel sphere r 20, 1024^2
 //   atlas_report --all            also boxes, a torus, blobs, raw voxel spheres
@@ -58,34 +59,35 @@ void report(const TestMesh &mesh, int textureSize, float texelsPerUnit, const ch
     std::printf("\n%s: %zu faces, %zu charts (%zu degenerate faces), %zu non-manifold edges, charts %.1f ms\n",
                 mesh.name.c_str(), mesh.faceCount(), charts.chartCount(), degenerateCharts, charts.nonManifoldEdges,
                 chartMs);
-    std::printf("  %-8s %6s %8s %7s %6s %6s %8s %8s %9s %9s %7s %7s %8s %8s\n", "mode", "size", "texel/u", "eff%",
-                "ctr%", "over", "overCtr", "noArea", "maxStr", "max1/cos", "near%", "bilin%", "pack ms", "bake ms");
+    std::printf("  %-8s %6s %8s %7s %6s %6s %8s %8s %9s %9s %7s %7s %6s %8s\n", "mode", "size", "texel/u", "eff%",
+                "ctr%", "over", "overCtr", "noArea", "maxStr", "max1/cos", "near%", "bilin%", "sep", "atlas ms");
     for (PackMode mode : {PackMode::Paper, PackMode::Tight}) {
-        PackOptions pack;
-        pack.mode = mode;
-        pack.textureSize = textureSize;
-        pack.texelsPerUnit = texelsPerUnit;
-        pack.gutter = gutter;
+        AtlasOptions options;
+        options.pack.mode = mode;
+        options.pack.textureSize = textureSize;
+        options.pack.texelsPerUnit = texelsPerUnit;
+        options.pack.gutter = gutter;
         t0 = std::chrono::steady_clock::now();
-        const AtlasLayout layout = packCharts(charts, pack);
-        const double packMs = msSince(t0);
-        t0 = std::chrono::steady_clock::now();
-        const AtlasTexture texture = bakeTexture(view, layout);
-        const double bakeMs = msSince(t0);
-        if (layout.status != AtlasStatus::Ok) {
-            std::printf("  %-8s failed: %s\n", toString(mode), layout.message.c_str());
+        const TextureAtlas atlas = buildTextureAtlas(view, options);
+        const double atlasMs = msSince(t0);
+        const AtlasLayout &layout = atlas.layout;
+        const AtlasTexture &texture = atlas.texture;
+        if (atlas.status() != AtlasStatus::Ok) {
+            std::printf("  %-8s failed: %s\n", toString(mode), atlas.message().c_str());
             continue;
         }
-        const AtlasMeasures m = measureAtlas(view, charts, layout);
+        const AtlasMeasures m = measureAtlas(view, atlas.charts, layout);
         const ColourFidelity fid = measureColourFidelity(view, layout, texture);
-        std::printf("  %-8s %6d %8.3f %7.2f %6.2f %6zu %8zu %8zu %9.5f %9.4f %7.3f %7.3f %8.1f %8.1f\n",
+        std::printf("  %-8s %6d %8.3f %7.2f %6.2f %6zu %8zu %8zu %9.5f %9.4f %7.3f %7.3f %6zu %8.1f\n",
                     toString(mode), layout.size, layout.texelsPerUnit, 100 * m.packingEfficiency,
                     100 * m.centreEfficiency, m.overlappingChartTexels, m.overlappingCentres, m.facesWithoutUvArea,
-                    m.maxStretch, m.maxInverseStretch, 100 * fid.nearest(), 100 * fid.bilinear(), packMs, bakeMs);
+                    m.maxStretch, m.maxInverseStretch, 100 * fid.nearest(), 100 * fid.bilinear(),
+                    atlas.charts.separatedFaces, atlasMs);
         std::printf("           packings tried %zu, min UV inradius %.2f texels, guaranteed faces' samples: "
-                    "nearest %zu/%zu, bilinear %zu/%zu, mean 1/cos %.4f\n",
+                    "nearest %zu/%zu, bilinear %zu/%zu, mean 1/cos %.4f, crisp guaranteed: %s (%zu thin, %zu crowded)\n",
                     layout.packAttempts, fid.minInradius, fid.guaranteedNearestMatches, fid.guaranteedNearest,
-                    fid.guaranteedBilinearMatches, fid.guaranteedBilinear, m.meanInverseStretch);
+                    fid.guaranteedBilinearMatches, fid.guaranteedBilinear, m.meanInverseStretch,
+                    atlas.crispGuaranteed ? "yes" : "no", atlas.crowded.thinFaces, atlas.crowded.crowdedFaces);
         if (ppmDir) {
             std::string name = mesh.name + "_" + toString(mode) + ".ppm";
             for (char &ch : name)

@@ -175,21 +175,17 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
     }
     // Faces too thin for the centre rule to guarantee their interior (UV inradius under sqrt(2)
     // texels: a texel holding one of their interior points may have its centre in a neighbour)
-    // paint the texels under their interior points with their own colour, thinnest last. Faces
-    // at least that thick are untouched: their interior points lie over their own centre texels.
+    // paint the texels under their interior points with their own colour. Faces at least that
+    // thick are untouched: their interior points lie over their own centre texels. Where two
+    // thin faces of different colours would share such a texel, the atlas gave one of them a
+    // chart of its own beforehand (crowded_faces.h), so the order does not matter.
     if (out.source == BakeSource::FaceColours) {
-        std::vector<std::pair<double, uint32_t>> thin;
         glm::dvec2 points[4] = {};
         for (size_t f = 0; f < mesh.faceCount; ++f) {
             load(f);
             const double inradius = faceInteriorPoints(q, points);
-            if (inradius > 0 && inradius < std::sqrt(2.0))
-                thin.emplace_back(inradius, uint32_t(f));
-        }
-        std::sort(thin.begin(), thin.end(), [](const auto &a, const auto &b) { return a.first > b.first; });
-        for (const auto &[inradius, f] : thin) {
-            load(f);
-            faceInteriorPoints(q, points);
+            if (!(inradius > 0 && inradius < std::sqrt(2.0)))
+                continue;
             for (const glm::dvec2 &p : points)
                 paint(std::clamp(int(std::floor(p.x)), 0, size - 1), std::clamp(int(std::floor(p.y)), 0, size - 1),
                       mesh.faceColours[f], kCentre);

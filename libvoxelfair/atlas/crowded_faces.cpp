@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include <glm/common.hpp>
@@ -20,70 +21,60 @@ namespace {
 // sqrt(2), so every face it treats as thin is thin here too.
 constexpr double kReach = 1.41421356237309505 + 0.01;
 
-// Thin faces' interior points, bucketed by (chart, cell) in cells of 2 * kReach texels: each
-// point goes into every cell its kReach box meets (at most 4), so the points near a query point
-// are all in the query point's own cell.
-class ThinPointGrid {
+// One chart's interior points in a uniform grid of cells at least 2 * kReach texels wide, so
+// the points within kReach of a query point lie in at most 4 cells. Cells grow with the chart's
+// area over its point count, which bounds the grid by the points, not by the chart's size.
+class ChartPointGrid {
 public:
-    explicit ThinPointGrid(size_t points) {
-        size_t slots = 64;
-        while (slots < 8 * points)
-            slots *= 2;
-        slots_.assign(slots, Slot{});
-        mask_ = slots - 1;
+    struct Point {
+        glm::dvec2 p;
+        uint32_t owner;
+    };
+
+    void build(glm::dvec2 size, const std::vector<Point> &points) {
+        cell_ = std::max(2 * kReach, std::sqrt(std::max(size.x * size.y, 1.0) / double(points.size())));
+        width_ = index(size.x) + 2;
+        height_ = index(size.y) + 2;
+        start_.assign(size_t(width_) * height_ + 1, 0);
+        for (const Point &q : points)
+            ++start_[cellOf(q.p) + 1];
+        for (size_t c = 1; c < start_.size(); ++c)
+            start_[c] += start_[c - 1];
+        fill_.assign(start_.begin(), start_.end() - 1);
+        entries_.resize(points.size());
+        for (const Point &q : points)
+            entries_[fill_[cellOf(q.p)]++] = q;
     }
 
-    void insert(uint32_t chart, glm::dvec2 p, uint32_t owner) {
-        const int x0 = cell(p.x - kReach), x1 = cell(p.x + kReach);
-        const int y0 = cell(p.y - kReach), y1 = cell(p.y + kReach);
+    // Calls visit(owner) for every point within kReach of p until visit returns true; returns
+    // whether it did.
+    template <class Visit>
+    bool anyNear(glm::dvec2 p, Visit &&visit) const {
+        const int x0 = clampX(index(p.x - kReach)), x1 = clampX(index(p.x + kReach));
+        const int y0 = clampY(index(p.y - kReach)), y1 = clampY(index(p.y + kReach));
         for (int y = y0; y <= y1; ++y)
             for (int x = x0; x <= x1; ++x) {
-                Slot &s = slots_[find(chart, x, y)];
-                s.chart = chart, s.x = x, s.y = y;
-                entries_.push_back({p, owner, s.head});
-                s.head = uint32_t(entries_.size() - 1);
+                const size_t c = size_t(y) * width_ + size_t(x);
+                for (uint32_t e = start_[c]; e < start_[c + 1]; ++e) {
+                    const glm::dvec2 d = entries_[e].p - p;
+                    if (glm::dot(d, d) < kReach * kReach && visit(entries_[e].owner))
+                        return true;
+                }
             }
-    }
-
-    // Calls visit(owner) for every thin point within kReach of p in `chart`.
-    template <class Visit>
-    void near(uint32_t chart, glm::dvec2 p, Visit &&visit) const {
-        const Slot &s = slots_[find(chart, cell(p.x), cell(p.y))];
-        for (uint32_t e = s.head; e != kNone; e = entries_[e].next) {
-            const glm::dvec2 d = entries_[e].p - p;
-            if (glm::dot(d, d) < kReach * kReach)
-                visit(entries_[e].owner);
-        }
+        return false;
     }
 
 private:
-    static constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
-    struct Slot {
-        uint32_t chart = kNone;
-        int x = 0, y = 0;
-        uint32_t head = kNone;
-    };
-    struct Entry {
-        glm::dvec2 p;
-        uint32_t owner, next;
-    };
-    static int cell(double v) { return int(std::floor(v / (2 * kReach))); }
+    // Cell column or row of a coordinate; the grid starts one cell below zero.
+    int index(double v) const { return int(std::floor(v / cell_)) + 1; }
+    int clampX(int x) const { return std::clamp(x, 0, width_ - 1); }
+    int clampY(int y) const { return std::clamp(y, 0, height_ - 1); }
+    size_t cellOf(glm::dvec2 p) const { return size_t(clampY(index(p.y))) * width_ + size_t(clampX(index(p.x))); }
 
-    // The slot of (chart, x, y), or the empty slot where it would go.
-    size_t find(uint32_t chart, int x, int y) const {
-        uint64_t h = (uint64_t(chart) * 0x9E3779B97F4A7C15ull) ^ (uint64_t(uint32_t(x)) * 0xC2B2AE3D27D4EB4Full) ^
-                     (uint64_t(uint32_t(y)) * 0x165667B19E3779F9ull);
-        h ^= h >> 29;
-        for (size_t i = size_t(h) & mask_;; i = (i + 1) & mask_) {
-            const Slot &s = slots_[i];
-            if (s.chart == kNone || (s.chart == chart && s.x == x && s.y == y))
-                return i;
-        }
-    }
-
-    std::vector<Slot> slots_;
-    std::vector<Entry> entries_;
-    size_t mask_ = 0;
+    double cell_ = 1;
+    int width_ = 0, height_ = 0;
+    std::vector<uint32_t> start_, fill_;
+    std::vector<Point> entries_;
 };
 
 // Face f's UV triangle in texels, projected onto its own plane and boxed at the origin.
@@ -124,69 +115,49 @@ CrowdedFaces separateCrowdedFaces(const AtlasMesh &mesh, AtlasCharts &charts, co
         return faceInteriorPoints(q, p);
     };
 
-    // Thin faces (by position in chartFaces) of the charts that hold one and more than one colour.
+    // Chart by chart, thinnest first: a thin face leaves its chart when an interior point of a
+    // face of another colour still in the chart lies within kReach of one of its own. Stops
+    // once over the budget.
+    const double budget = options.maxSeparatedShare * double(mesh.faceCount);
     std::vector<double> inradius(entries, 0.0);
-    std::vector<uint32_t> searched;  // charts to search
+    std::vector<uint8_t> separated(entries, 0);
     std::vector<uint32_t> thin;
+    std::vector<ChartPointGrid::Point> chartPoints;
+    ChartPointGrid grid;
     for (uint32_t c = 0; c < charts.chartCount(); ++c) {
         if (charts.isDegenerate(c))
             continue;
         const uint32_t first = charts.chartFirstFace[c], end = charts.chartFirstFace[c + 1];
         bool mixed = false;
-        const size_t thinBefore = thin.size();
-        glm::dvec2 p[4];
+        thin.clear();
+        chartPoints.clear();
+        glm::dvec2 p[4] = {};
         for (uint32_t i = first; i < end; ++i) {
             mixed = mixed || colour(i) != colour(first);
             inradius[i] = points(i, p);
             if (inradius[i] < kReach)
                 thin.push_back(i);
-        }
-        out.thinFaces += thin.size() - thinBefore;
-        if (mixed && thin.size() > thinBefore)
-            searched.push_back(c);
-        else
-            thin.resize(thinBefore);
-    }
-    if (thin.empty())
-        return out;
-
-    // Pairs (thin face, face of another colour) with interior points closer than kReach.
-    ThinPointGrid grid(4 * thin.size());
-    for (uint32_t i : thin) {
-        glm::dvec2 p[4];
-        points(i, p);
-        for (const glm::dvec2 &q : p)
-            grid.insert(charts.faceChart[charts.chartFaces[i]], q, i);
-    }
-    std::vector<std::pair<uint32_t, uint32_t>> crowded;
-    for (uint32_t c : searched)
-        for (uint32_t i = charts.chartFirstFace[c]; i < charts.chartFirstFace[c + 1]; ++i) {
-            glm::dvec2 p[4];
-            points(i, p);
             for (const glm::dvec2 &q : p)
-                grid.near(c, q, [&](uint32_t owner) {
-                    if (owner != i && colour(owner) != colour(i))
-                        crowded.emplace_back(owner, i);
-                });
+                chartPoints.push_back({q, i});
         }
-    std::sort(crowded.begin(), crowded.end());
-    crowded.erase(std::unique(crowded.begin(), crowded.end()), crowded.end());
-
-    // Thinnest first: a thin face leaves its chart while any partner is still in it.
-    std::sort(thin.begin(), thin.end(), [&](uint32_t a, uint32_t b) {
-        return inradius[a] != inradius[b] ? inradius[a] < inradius[b] : a < b;
-    });
-    std::vector<uint8_t> separated(entries, 0);
-    for (uint32_t i : thin) {
-        auto pair = std::lower_bound(crowded.begin(), crowded.end(), std::make_pair(i, uint32_t(0)));
-        for (; pair != crowded.end() && pair->first == i; ++pair)
-            if (!separated[pair->second]) {
-                separated[i] = 1;
-                ++out.crowdedFaces;
-                break;
-            }
+        out.thinFaces += thin.size();
+        if (!mixed || thin.empty())
+            continue;
+        grid.build(glm::dvec2(charts.chartSize[c]) * d, chartPoints);
+        std::sort(thin.begin(), thin.end(), [&](uint32_t a, uint32_t b) {
+            return inradius[a] != inradius[b] ? inradius[a] < inradius[b] : a < b;
+        });
+        for (uint32_t i : thin) {
+            const ChartPointGrid::Point *own = &chartPoints[4 * size_t(i - first)];
+            for (int k = 0; k < 4 && !separated[i]; ++k)
+                separated[i] = grid.anyNear(own[k].p, [&](uint32_t other) {
+                    return other != i && !separated[other] && colour(other) != colour(i);
+                });
+            if (separated[i] && double(++out.crowdedFaces) > budget)
+                return out;
+        }
     }
-    if (out.crowdedFaces == 0 || double(out.crowdedFaces) > options.maxSeparatedShare * double(mesh.faceCount))
+    if (out.crowdedFaces == 0)
         return out;
     out.separatedFaces = out.crowdedFaces;
 

@@ -13,17 +13,17 @@
 // thin face has an interior point within sqrt(2) texels of an interior point of a differently
 // coloured face of its chart, every sample reads its face's colour.
 //
-// What it does. Such "crowded" thin faces are found with a hash grid over the thin faces'
-// interior points, then separated thinnest first until none is left with a crowded partner
-// (the thicker of two thin faces usually stays). A separated face is projected onto its own
+// What it does. Chart by chart, such "crowded" thin faces are found with a grid over the thin
+// faces' interior points, then separated thinnest first until none is left with a crowded
+// partner (the thicker of two thin faces usually stays). A separated face is projected onto its own
 // plane, so its stretch is 1; the charts it leaves keep theirs, re-boxed to the origin.
 //
 // Cost. Only charts holding a thin face and more than one colour are searched; at 8 texels per
 // voxel a faired voxel model has few thin faces (the slivers the fairing squeezes). At 2 texels
 // per voxel almost every voxel triangle is thin and pixel-art colours crowd almost all of them:
 // a texture that coarse cannot keep every voxel, and separating half the mesh into one-face
-// charts would ruin the atlas. Above `maxSeparatedShare` of the faces nothing is separated and
-// the result says how many faces were crowded, for the caller to report.
+// charts would ruin the atlas. Past `maxSeparatedShare` of the faces the search stops, nothing
+// is separated and the result says so, for the caller to report.
 #pragma once
 
 #include "atlas/atlas_mesh.h"
@@ -43,7 +43,9 @@ struct CrowdedFaceOptions {
 
 struct CrowdedFaces {
     size_t thinFaces = 0;       // UV inradius under sqrt(2) texels (with a 0.01 texel margin)
-    size_t crowdedFaces = 0;    // thin faces that needed their own chart
+    // Thin faces that need their own chart. Over the budget the search stops: then it counts
+    // those found until the budget was passed, and thinFaces those seen until then.
+    size_t crowdedFaces = 0;
     size_t separatedFaces = 0;  // crowdedFaces, or 0 when over the budget
     bool overBudget() const { return crowdedFaces != separatedFaces; }
 };

@@ -18,18 +18,35 @@ TextureAtlas buildTextureAtlas(const AtlasMesh &mesh, const AtlasOptions &option
     atlas.layout = packCharts(atlas.charts, options.pack);
     // A fixed size (or the maximum size) sets the density only while packing: separate for the
     // density found, a little below it since the separated charts take room, and pack again.
-    // Separating for a density serves every higher one.
+    // Separating for a density serves every higher one. Separated charts lower the density, which
+    // can crowd more faces; if that ends over the budget, the first packing is kept (denser).
+    AtlasCharts firstCharts;
+    AtlasLayout firstLayout;
+    CrowdedFaces firstCrowded;
     for (int round = 0; crisp && round < 4 && atlas.layout.status == AtlasStatus::Ok; ++round) {
         const double found = atlas.layout.texelsPerUnit;
         if (found >= separatedAt && separatedAt > 0)
             break;
+        if (round == 0) {
+            firstCharts = atlas.charts;
+            firstLayout = atlas.layout;
+        }
         const bool fixed = options.pack.textureSize > 0 || atlas.layout.densityReduced;
-        if (!separate(fixed ? found * 0.98 : found))
+        const bool separated = separate(fixed ? found * 0.98 : found);
+        if (round == 0)
+            firstCrowded = atlas.crowded;
+        if (!separated)
             break;  // nothing more to separate: the layout stands
         atlas.layout = packCharts(atlas.charts, options.pack);
     }
     atlas.crispGuaranteed = crisp && atlas.layout.status == AtlasStatus::Ok && !atlas.crowded.overBudget() &&
                             atlas.layout.texelsPerUnit >= separatedAt;
+    if (crisp && !atlas.crispGuaranteed && !firstCharts.chartAxis.empty()) {
+        atlas.charts = std::move(firstCharts);
+        atlas.layout = std::move(firstLayout);
+        atlas.crowded = firstCrowded;
+        atlas.crowded.separatedFaces = 0;
+    }
     atlas.texture = bakeTexture(mesh, atlas.layout, options.bake);
     return atlas;
 }

@@ -33,9 +33,10 @@ struct TextureAtlas {
     AtlasCharts charts;
     AtlasLayout layout;
     AtlasTexture texture;
-    // The last separation of crowded faces, and whether every interior point of every face is
-    // sure to read its face's colour (crisp bake, nothing over the budget, and the packing
-    // density no lower than the one separated for).
+    // The separation of crowded faces that the layout was packed after, and whether every
+    // interior point of every face is sure to read its face's colour (crisp bake, nothing over
+    // the budget, and the packing density no lower than the one separated for). When it is not,
+    // crowded.crowdedFaces counts the faces that may read a neighbour's colour somewhere.
     CrowdedFaces crowded;
     bool crispGuaranteed = false;
 
