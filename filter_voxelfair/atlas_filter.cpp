@@ -85,21 +85,40 @@ bool FilterVoxelfairPlugin::applyTextureAtlas(MeshModel &m, const RichParameterL
     options.charts.minSeedCosine = std::cos(angle * float(M_PI) / 180.0f);
     options.pack.mode = parameters.getEnum("packing") == 1 ? PackMode::Paper : PackMode::Tight;
     float voxelSize = parameters.getFloat("voxelSize");
+    std::vector<float> faceScale;
     if (voxelSize <= 0.0f) {
-        // One density for all charts: that of the import's largest part, so a section an HVA
-        // frame shrinks to 1% does not blow the texture up a hundredfold.
+        // Each part's voxels get the same texels: parts may be scaled differently (an HVA frame
+        // can shrink a section to 1%). The density is that of the largest part, and the others'
+        // faces are scaled by their voxel size relative to it.
         const PolygonArrays arrays = polygonArrays(m.cm);
         const std::vector<PartArrays> parts = splitByPart(arrays, m.cm);
         const PartArrays *largest = nullptr;
-        for (const PartArrays &part : parts)
+        std::vector<std::pair<int, float>> partVoxel;
+        for (const PartArrays &part : parts) {
             if (largest == nullptr || part.polygonCount() > largest->polygonCount()) largest = &part;
-        voxelSize = largest ? detectVoxelSize(largest->positions.data(), largest->positions.size(),
-                                              largest->polygonOffsets.data(), largest->polygonIndices.data(),
-                                              largest->polygonCount())
+            partVoxel.emplace_back(part.part, detectVoxelSize(part.positions.data(), part.positions.size(),
+                                                              part.polygonOffsets.data(), part.polygonIndices.data(),
+                                                              part.polygonCount()));
+        }
+        voxelSize = largest ? partVoxel[size_t(largest - parts.data())].second
                             : detectVoxelSize(arrays.positions.data(), arrays.positions.size(),
                                               arrays.polygonOffsets.data(), arrays.polygonIndices.data(),
                                               arrays.polygonCount());
-        if (!(voxelSize > 0.0f)) voxelSize = 1.0f;
+        if (!(voxelSize > 0.0f) || !std::isfinite(voxelSize)) voxelSize = 1.0f;
+        const std::vector<int> facePart = parts.empty() ? std::vector<int>() : facePartNumbers(m.cm);
+        bool scaled = false;
+        if (!facePart.empty()) {
+            faceScale.assign(input.faceOf.size(), 1.0f);
+            for (size_t i = 0; i < input.faceOf.size(); ++i)
+                for (const auto &[part, size] : partVoxel)
+                    if (part == facePart[input.faceOf[i]]) {
+                        const float scale = voxelSize / size;
+                        if (size > 0.0f && std::isfinite(scale) && scale > 0.0f) faceScale[i] = scale;
+                        scaled = scaled || faceScale[i] != 1.0f;
+                        break;
+                    }
+        }
+        if (scaled) input.mesh.faceTexelScale = faceScale.data();
     }
     const float texelsPerVoxel = parameters.getFloat("texelsPerVoxel");
     if (!(texelsPerVoxel > 0.0f)) return fail("Texture Atlas: texels per voxel must be positive");

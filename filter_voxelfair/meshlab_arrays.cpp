@@ -182,6 +182,16 @@ void writePositions(const PolygonArrays &arrays, const std::vector<glm::vec3> &p
     }
 }
 
+std::vector<int> facePartNumbers(const CMeshO &mesh) {
+    if (!vcg::tri::HasPerFaceAttribute(mesh, "voxelfair_part")) return {};
+    CMeshO &lookup = const_cast<CMeshO &>(mesh);  // vcglib's lookup takes a mutable mesh
+    auto partOf = vcg::tri::Allocator<CMeshO>::FindPerFaceAttribute<int>(lookup, "voxelfair_part");
+    if (!vcg::tri::Allocator<CMeshO>::IsValidHandle(lookup, partOf)) return {};
+    std::vector<int> parts(mesh.face.size());
+    for (size_t f = 0; f < mesh.face.size(); ++f) parts[f] = partOf[f];
+    return parts;
+}
+
 std::vector<PartArrays> splitByPart(const PolygonArrays &arrays, const CMeshO &mesh) {
     if (!vcg::tri::HasPerFaceAttribute(mesh, "voxelfair_part")) return {};
     // vcglib's attribute lookup takes a mutable mesh; nothing is written through it.

@@ -52,4 +52,7 @@ struct PartArrays {
 // size. Returns nothing when the mesh has no such attribute or only one part.
 std::vector<PartArrays> splitByPart(const PolygonArrays &arrays, const CMeshO &mesh);
 
+// Per CMeshO face, its part number ("voxelfair_part"); empty when the mesh has no such attribute.
+std::vector<int> facePartNumbers(const CMeshO &mesh);
+
 }  // namespace voxelfair

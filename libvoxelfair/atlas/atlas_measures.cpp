@@ -80,7 +80,8 @@ AtlasMeasures measureAtlas(const AtlasMesh &mesh, const AtlasCharts &charts, con
             for (int k = 0; k < 3; ++k)
                 p[k] = mesh.positions[mesh.triangles[3 * f + k]];
             const SingularValues s = mapSingularValues(p, q);
-            const double stretch = s.max / layout.texelsPerUnit, inverse = layout.texelsPerUnit / s.min;
+            const double density = layout.texelsPerUnit * (mesh.faceTexelScale ? mesh.faceTexelScale[f] : 1.0f);
+            const double stretch = s.max / density, inverse = density / s.min;
             m.charts[c].maxStretch = std::max(m.charts[c].maxStretch, stretch);
             m.charts[c].maxInverseStretch = std::max(m.charts[c].maxInverseStretch, inverse);
             const double area = glm::length(glm::cross(p[1] - p[0], p[2] - p[0]));

@@ -1,5 +1,7 @@
 #include "atlas/atlas_mesh.h"
 
+#include <cmath>
+
 namespace voxelfair {
 
 const char *toString(AtlasStatus status) {
@@ -30,6 +32,11 @@ AtlasStatus validateAtlasMesh(const AtlasMesh &mesh, std::string *message) {
             return fail(AtlasStatus::InvalidInput, "face " + std::to_string(i / 3) + " uses vertex " +
                                                        std::to_string(mesh.triangles[i]) + " of " +
                                                        std::to_string(mesh.vertexCount));
+    if (mesh.faceTexelScale)
+        for (size_t f = 0; f < mesh.faceCount; ++f)
+            if (!(mesh.faceTexelScale[f] > 0) || !std::isfinite(mesh.faceTexelScale[f]))
+                return fail(AtlasStatus::InvalidInput, "face " + std::to_string(f) +
+                                                           " has a texel scale that is not positive and finite");
     if (message)
         message->clear();
     return AtlasStatus::Ok;

@@ -27,6 +27,11 @@ struct AtlasMesh {
     // Optional. Face normals (any length); computed from the positions when null, or for a face
     // whose given normal is zero or not finite.
     const glm::vec3 *faceNormals = nullptr;
+    // Optional. Per face, a factor on the texel density (positive, finite): a model whose parts
+    // have different voxel sizes (an HVA frame can shrink a section to 1%) passes largest voxel
+    // size / the face's part's voxel size, so every part's voxels get the same texels per voxel.
+    // A chart never mixes factors; stretch is measured against each face's own density.
+    const float *faceTexelScale = nullptr;
 };
 
 enum class AtlasStatus {

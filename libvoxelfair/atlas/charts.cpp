@@ -119,9 +119,11 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
     out.wedgeUv.resize(3 * faceCount);
 
     // Breadth-first growth from `seed`; chartFaces doubles as the queue.
+    auto scaleOf = [&](uint32_t f) { return mesh.faceTexelScale ? mesh.faceTexelScale[f] : 1.0f; };
     auto grow = [&](uint32_t seed) {
         const uint32_t chart = uint32_t(out.chartAxis.size());
         const glm::vec3 axis = normals[seed].cone;
+        const float scale = scaleOf(seed);
         out.chartAxis.push_back(axis);
         out.chartFirstFace.push_back(uint32_t(out.chartFaces.size()));
         out.faceChart[seed] = chart;
@@ -130,7 +132,7 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
             const uint32_t f = out.chartFaces[q];
             for (uint32_t h = 3 * f; h < 3 * f + 3; ++h) {
                 const uint32_t o = adjacency.opposite[h];
-                if (o == kNoOpposite || out.faceChart[o / 3] != kFree)
+                if (o == kNoOpposite || out.faceChart[o / 3] != kFree || scaleOf(o / 3) != scale)
                     continue;
                 const FaceNormals &n = normals[o / 3];
                 if (glm::dot(axis, n.cone) >= cone && glm::dot(axis, n.geometric) >= cone) {
@@ -150,11 +152,12 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
         const SeedPlane plane = seedPlane(glm::normalize(glm::dvec3(out.chartAxis[c])));
         const uint32_t *faces = out.chartFaces.data() + first;
         const glm::dvec3 origin = mesh.positions[mesh.triangles[3 * faces[0]]];
+        const double scale = scaleOf(faces[0]);
         glm::vec2 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
         for (glm::vec2 *w = uv; w != uvEnd; ++faces)
             for (int k = 0; k < 3; ++k, ++w) {
                 const glm::dvec3 d = glm::dvec3(mesh.positions[mesh.triangles[3 * *faces + k]]) - origin;
-                *w = glm::vec2(glm::dot(d, plane.t1), glm::dot(d, plane.t2));
+                *w = glm::vec2(glm::dvec2(glm::dot(d, plane.t1), glm::dot(d, plane.t2)) * scale);
                 lo = glm::min(lo, *w);
                 hi = glm::max(hi, *w);
             }

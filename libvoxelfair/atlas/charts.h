@@ -5,13 +5,14 @@
 //     (the most axis-aligned faces start charts first); ties keep face order.
 //   * Growth: breadth-first over edge-adjacent faces; an unassigned neighbour joins when its
 //     normal is within the cone around the SEED face's normal (not the neighbour's), as the
-//     authors did (vxlse3-notes §6b). Non-manifold edges are chart borders. A mesh storing its
+//     authors did (vxlse3-notes §6b). Non-manifold edges, and edges between faces of different
+//     texel scales, are chart borders. A mesh storing its
 //     corners unshared (more border edges than faces) has its edges matched by position.
 //   * Beyond the paper: a chart whose projection winds over itself (a helical ramp) is cut
 //     back to the half of its faces nearest the seed until it does not (chart_overlap.h), so
 //     no texel is shared by two faces.
-//   * Projection: orthographic onto the seed plane (seed_plane.h), in model units, so every
-//     chart has the same texel density once packed. UVs are per wedge (3 per face): a vertex on
+//   * Projection: orthographic onto the seed plane (seed_plane.h), in model units (times the
+//     mesh's faceTexelScale, when given), so every chart has the same texel density once packed. UVs are per wedge (3 per face): a vertex on
 //     a chart border simply gets one UV per chart, which is the paper's vertex cloning.
 //
 // Stretch: a face at angle t to its seed normal is shrunk by cos t across one direction and kept

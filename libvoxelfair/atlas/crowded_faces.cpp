@@ -90,7 +90,10 @@ void projectAlone(const AtlasMesh &mesh, uint32_t f, glm::vec2 uv[3], glm::vec3 
         lo = glm::min(lo, q[k]);
     }
     glm::dvec2 hi(0.0);
+    const double scale = mesh.faceTexelScale ? mesh.faceTexelScale[f] : 1.0;
+    lo *= scale;
     for (int k = 0; k < 3; ++k) {
+        q[k] *= scale;
         uv[k] = glm::vec2(q[k] - lo);
         hi = glm::max(hi, q[k] - lo);
     }

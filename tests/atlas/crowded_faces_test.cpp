@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <limits>
 #include <random>
 
 using namespace voxelfair;
@@ -192,4 +194,47 @@ TEST(CrowdedFaces, OneColourOrASmoothedBakeSeparatesNothing) {
     EXPECT_EQ(atlas.charts.separatedFaces, 0u);
     EXPECT_EQ(atlas.crowded.thinFaces, 0u);
     EXPECT_FALSE(atlas.crispGuaranteed);
+}
+
+// A section an HVA frame shrinks to 1% (shared model subapc has four): with one density its
+// voxels would get 0.08 texels and could not keep their colours; faceTexelScale gives each
+// part's voxels the same texels, and the guarantee holds for both parts.
+TEST(CrowdedFaces, APartShrunkToOnePercentKeepsEveryVoxelWithItsTexelScale) {
+    const TestMesh big = paperFaired(voxelSphere(7));
+    TestMesh mesh = big;
+    mesh.name = "sphere and its 1% copy";
+    const uint32_t offset = uint32_t(mesh.positions.size());
+    for (const glm::vec3 &p : big.positions)
+        mesh.positions.push_back(p * 0.01f + glm::vec3(30.0f, 0.0f, 0.0f));
+    for (uint32_t v : big.triangles)
+        mesh.triangles.push_back(v + offset);
+    mesh.faceColours.insert(mesh.faceColours.end(), big.faceColours.begin(), big.faceColours.end());
+    std::vector<float> scale(mesh.faceCount(), 1.0f);
+    std::fill(scale.begin() + long(big.faceCount()), scale.end(), 100.0f);
+
+    AtlasOptions options;
+    options.pack.texelsPerUnit = 8;
+    const TextureAtlas single = buildTextureAtlas(mesh.view(), options);
+    EXPECT_FALSE(single.crispGuaranteed);
+    EXPECT_GT(wrongSamples(mesh, single), 0u);
+
+    AtlasMesh view = mesh.view();
+    view.faceTexelScale = scale.data();
+    const TextureAtlas atlas = buildTextureAtlas(view, options);
+    ASSERT_EQ(atlas.status(), AtlasStatus::Ok) << atlas.message();
+    EXPECT_TRUE(atlas.crispGuaranteed);
+    EXPECT_EQ(wrongSamples(mesh, atlas), 0u);
+    for (size_t c = 0; c < atlas.charts.chartCount(); ++c)
+        for (uint32_t i = atlas.charts.chartFirstFace[c]; i < atlas.charts.chartFirstFace[c + 1]; ++i)
+            EXPECT_EQ(scale[atlas.charts.chartFaces[i]], scale[atlas.charts.chartFaces[atlas.charts.chartFirstFace[c]]]);
+    // Stretch against each face's own density: the usual bounds.
+    const AtlasMeasures m = measureAtlas(view, atlas.charts, atlas.layout);
+    EXPECT_EQ(m.overlappingChartTexels, 0u);
+    EXPECT_LE(m.maxStretch, 1.0 + 1e-3);
+    EXPECT_LE(m.maxInverseStretch, 1.0 / 0.7 + 1e-3);
+
+    scale[0] = -1.0f;
+    EXPECT_EQ(buildTextureAtlas(view, options).status(), AtlasStatus::InvalidInput);
+    scale[0] = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_EQ(buildTextureAtlas(view, options).status(), AtlasStatus::InvalidInput);
 }
