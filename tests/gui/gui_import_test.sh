@@ -12,8 +12,9 @@ chmod 700 "$work"
 
 # Xvfb picks a free display itself and writes its number once it accepts connections
 # (-displayfd), so neither a display taken by a parallel test nor a slow start under load can
-# leave MeshLab without a screen.
-Xvfb -displayfd 3 -screen 0 1280x800x24 -nolisten tcp 3>"$work/display" >"$work/xvfb.log" 2>&1 &
+# leave MeshLab without a screen. -noreset: by default the server resets when its last client
+# leaves (our xdpyinfo probe), and a client connecting during that reset is refused.
+Xvfb -displayfd 3 -noreset -screen 0 1280x800x24 -nolisten tcp 3>"$work/display" >"$work/xvfb.log" 2>&1 &
 xvfb=$!
 meshlab_pid=
 cleanup() {
