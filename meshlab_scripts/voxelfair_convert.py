@@ -212,6 +212,9 @@ def main():
         sys.exit("voxelfair: --passes must be at least 1 and --texels-per-voxel positive")
     if args.palette and not Path(args.palette).is_file():
         sys.exit(f"voxelfair: {args.palette}: no such palette file")
+    # Absolute, so the texture goes where the meshes go: the filter resolves a relative texture
+    # name against the folder of the mesh's file, which is the input model's.
+    args.output = str(Path(args.output).resolve())
 
     run = Run(find_meshlabserver(args.build), importer_environment(args), args.timeout)
     models = collect_inputs(args.inputs)
@@ -233,7 +236,7 @@ def main():
     if failures:
         print(f"voxelfair: {failures} of {len(models)} models failed", file=sys.stderr)
         return 1
-    print(f"voxelfair: {len(models)} models converted into {Path(args.output).resolve()}")
+    print(f"voxelfair: {len(models)} models converted into {args.output}")
     return 0
 
 

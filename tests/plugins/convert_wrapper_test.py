@@ -1,0 +1,77 @@
+"""The batch wrapper meshlab_scripts/voxelfair_convert.py, run as users run it.
+
+usage: convert_wrapper_test.py BUILD_DIR EXAMPLE_VXL
+
+Each case runs the wrapper from a scratch folder with a relative output folder, and checks what
+it wrote, where, and what it said.
+"""
+import shutil
+import subprocess
+import sys
+import tempfile
+import unittest
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+WRAPPER = HERE.parent.parent / "meshlab_scripts" / "voxelfair_convert.py"
+BUILD, EXAMPLE = Path(sys.argv[1]), Path(sys.argv[2])
+
+
+def wrapper(cwd, *arguments):
+    result = subprocess.run([sys.executable, str(WRAPPER), "--build", str(BUILD), *arguments], cwd=cwd,
+                            capture_output=True, text=True, timeout=600)
+    return result.returncode, result.stdout + result.stderr
+
+
+def ply_header(path):
+    data = path.read_bytes()
+    return data[:data.index(b"end_header")].decode("ascii", "replace")
+
+
+class ConvertWrapper(unittest.TestCase):
+    def setUp(self):
+        self.work = Path(tempfile.mkdtemp(prefix="voxelfair-wrapper-"))
+        self.inputs = self.work / "models"
+        self.inputs.mkdir()
+        shutil.copy(EXAMPLE, self.inputs / "tank.vxl")
+        if EXAMPLE.with_suffix(".hva").is_file():
+            shutil.copy(EXAMPLE.with_suffix(".hva"), self.inputs / "tank.hva")
+        self.before = sorted(p.name for p in self.inputs.iterdir())
+
+    def tearDown(self):
+        shutil.rmtree(self.work)
+
+    def test_full_mode_writes_everything_into_a_relative_output_folder(self):
+        code, output = wrapper(self.work, "models/tank.vxl", "-o", "out")
+        self.assertEqual(code, 0, output)
+        out = self.work / "out"
+        for name in ("tank.ply", "tank.obj", "tank.obj.mtl", "tank_texture.png"):
+            self.assertTrue((out / name).is_file() and (out / name).stat().st_size > 0, f"{name} missing\n{output}")
+        self.assertEqual((out / "tank_texture.png").read_bytes()[:8], b"\x89PNG\r\n\x1a\n")
+        self.assertIn("comment TextureFile tank_texture.png", ply_header(out / "tank.ply"))
+        self.assertIn("tank_texture.png", (out / "tank.obj.mtl").read_text())
+        # Nothing written beside the input model.
+        self.assertEqual(sorted(p.name for p in self.inputs.iterdir()), self.before)
+        self.assertIn("Texture Atlas:", output)
+
+    def test_import_and_compare_modes(self):
+        code, output = wrapper(self.work, "models", "-o", "imported", "--mode", "import")
+        self.assertEqual(code, 0, output)
+        self.assertIn("element face", ply_header(self.work / "imported" / "tank.ply"))
+        code, output = wrapper(self.work, "models/tank.vxl", "-o", "compared", "--mode", "compare")
+        self.assertEqual(code, 0, output)
+        for label in ("raw", "voxelfair", "constrained", "taubin"):
+            self.assertTrue((self.work / "compared" / f"tank_{label}.ply").is_file(), f"{label}\n{output}")
+
+    def test_a_broken_model_is_named_with_the_importers_reason_and_the_others_still_convert(self):
+        (self.inputs / "broken.vxl").write_bytes(b"Voxel Animation\0" + b"\xff" * 40)
+        code, output = wrapper(self.work, "models", "-o", "out", "--mode", "import")
+        self.assertNotEqual(code, 0, output)
+        self.assertIn("broken.vxl FAILED", output)
+        self.assertIn(f"io_vxl: {self.inputs.resolve() / 'broken.vxl'}: ", output)
+        self.assertTrue((self.work / "out" / "tank.ply").is_file(), output)
+        self.assertIn("1 of 2 models failed", output)
+
+
+if __name__ == "__main__":
+    unittest.main(argv=sys.argv[:1], verbosity=2)
