@@ -64,6 +64,7 @@ struct Prepared {
     AtlasLayout layout;
     size_t atlasVertices = 0;
     int textureSize = 0;
+    CrowdedFaces crowded;  // crisp colours: thin faces crowded by other colours (crowded_faces.h)
 #ifdef VOXELFAIR_HAVE_VCGLIB
     // The raw surface as MeshLab holds it (a-c triangles); the Taubin benchmark smooths it in place.
     mutable vcgtaubin::Mesh taubinMesh;
@@ -94,6 +95,7 @@ const Prepared &prepared(const std::string &name) {
     const TextureAtlas atlas = pipeline::buildAtlas(p.faired, p.attributes);
     p.atlasVertices = pipeline::atlasVertexCount(atlas, p.attributes);
     p.textureSize = atlas.texture.size;
+    p.crowded = atlas.crowded;
 #ifdef VOXELFAIR_HAVE_VCGLIB
     vcgtaubin::build(p.taubinMesh, p.raw.positions, p.attributes.triangles);
 #endif
@@ -110,6 +112,9 @@ void setCounters(benchmark::State &state, const Prepared &p) {
     state.counters["atlas_vertices"] = double(p.atlasVertices);
     state.counters["charts"] = double(p.charts.chartCount());
     state.counters["texture"] = double(p.textureSize);
+    state.counters["thin"] = double(p.crowded.thinFaces);
+    state.counters["crowded"] = double(p.crowded.crowdedFaces);
+    state.counters["separated"] = double(p.crowded.separatedFaces);
 }
 
 using Stage = void (*)(benchmark::State &, const Prepared &);
