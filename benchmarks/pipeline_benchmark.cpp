@@ -10,6 +10,7 @@
 //   Scaling/<stage>/sphere_r<R>   the same stages on voxel spheres of radius 8 to 120.
 //   Chain/<model>                 extraction to baked texture in one go. Goal: the paper's largest
 //                                 model size (~63k opaque voxels; its Table 1: 7.1 s) within 100 ms.
+//   Chain8TexelsPerVoxel/tank63k  the same at the filter's default density.
 //   Parse/<model>                 the .vxl/.hva bytes (already in memory) to a scene.
 //
 // VXL sections are meshed in their own voxel units, as the authors did (tools/pipeline_stages.h).
@@ -187,16 +188,24 @@ void taubin10(benchmark::State &state, const Prepared &p) {
 }
 #endif
 
-// Extraction to baked texture, every stage's output allocated afresh as a caller would.
-void chain(benchmark::State &state, const Prepared &p) {
+// Extraction to baked texture, every stage's output allocated afresh as a caller would, at
+// `texelsPerVoxel` (4: the atlas unit's default; 8: the filter's).
+void chainAt(benchmark::State &state, const Prepared &p, float texelsPerVoxel) {
+    AtlasOptions options;
+    options.pack.texelsPerUnit = texelsPerVoxel;
+    TextureAtlas atlas;
     for (auto _ : state) {
         pipeline::QuadMesh mesh = pipeline::extract(p.model->scene);
         pipeline::fair(mesh);
         const pipeline::Attributes a = pipeline::smoothAttributes(mesh);
-        const TextureAtlas atlas = pipeline::buildAtlas(mesh, a);
+        atlas = pipeline::buildAtlas(mesh, a, options);
         benchmark::DoNotOptimize(atlas.texture.rgba.data());
     }
+    state.counters["texture_at_density"] = atlas.texture.size;
+    state.counters["separated_at_density"] = double(atlas.charts.separatedFaces);
 }
+void chain(benchmark::State &state, const Prepared &p) { chainAt(state, p, 4.0f); }
+void chainAt8(benchmark::State &state, const Prepared &p) { chainAt(state, p, 8.0f); }
 
 void parseVxl(benchmark::State &state, const std::string &name) {
     std::vector<uint8_t> vxlBytes, hvaBytes;
@@ -254,6 +263,9 @@ int main(int argc, char **argv) {
         benchmark::RegisterBenchmark(("Chain/" + model).c_str(),
                                      [model](benchmark::State &state) { runStage(state, model, chain); })
             ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("Chain8TexelsPerVoxel/tank63k",
+                                 [](benchmark::State &state) { runStage(state, "tank63k", chainAt8); })
+        ->Unit(benchmark::kMillisecond);
     for (const std::string model : {"subapc", "legs"})
         benchmark::RegisterBenchmark(("Parse/" + model).c_str(),
                                      [model](benchmark::State &state) { parseVxl(state, model); })
