@@ -21,6 +21,12 @@ namespace {
 // sqrt(2), so every face it treats as thin is thin here too.
 constexpr double kReach = 1.41421356237309505 + 0.01;
 
+// Faces thinner than this (texels) may lose their UV area to float rounding once packed, and
+// packing then gives them a tiny triangle at their first corner (packing.h): their interior
+// points move there, out of this search's sight. In a chart with other colours they are
+// separated whatever their neighbours.
+constexpr double kFloatThin = 0.01;
+
 // One chart's interior points in a uniform grid of cells at least 2 * kReach texels wide, so
 // the points within kReach of a query point lie in at most 4 cells. Cells grow with the chart's
 // area over its point count, which bounds the grid by the points, not by the chart's size.
@@ -115,7 +121,10 @@ CrowdedFaces separateCrowdedFaces(const AtlasMesh &mesh, AtlasCharts &charts, co
         glm::dvec2 q[3];
         for (int k = 0; k < 3; ++k)
             q[k] = glm::dvec2(charts.wedgeUv[3 * i + k]) * d;
-        return faceInteriorPoints(q, p);
+        const double r = faceInteriorPoints(q, p);
+        if (!(r > 0))
+            p[0] = p[1] = p[2] = p[3] = q[0];  // no area in UV: its corner stands for it
+        return r;
     };
 
     // Chart by chart, thinnest first: a thin face leaves its chart when an interior point of a
@@ -152,6 +161,7 @@ CrowdedFaces separateCrowdedFaces(const AtlasMesh &mesh, AtlasCharts &charts, co
         });
         for (uint32_t i : thin) {
             const ChartPointGrid::Point *own = &chartPoints[4 * size_t(i - first)];
+            separated[i] = inradius[i] < kFloatThin;
             for (int k = 0; k < 4 && !separated[i]; ++k)
                 separated[i] = grid.anyNear(own[k].p, [&](uint32_t other) {
                     return other != i && !separated[other] && colour(other) != colour(i);

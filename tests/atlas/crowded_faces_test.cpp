@@ -238,3 +238,20 @@ TEST(CrowdedFaces, APartShrunkToOnePercentKeepsEveryVoxelWithItsTexelScale) {
     scale[0] = std::numeric_limits<float>::quiet_NaN();
     EXPECT_EQ(buildTextureAtlas(view, options).status(), AtlasStatus::InvalidInput);
 }
+
+// A sliver thinner than 0.01 texel may lose its UV area to float rounding once packed (then it
+// is given a tiny triangle at a corner, away from where this search looked): in a chart with
+// another colour it is separated even with no other colour near it.
+TEST(CrowdedFaces, AFloatThinSliverInAMixedChartIsSeparated) {
+    TestMesh plate;
+    plate.name = "plate with a sliver";
+    plate.positions = {{0, 0, 0}, {10, 0, 0}, {10, 10, 0}, {0, 10, 0}, {5, 1e-4f, 0}};
+    plate.triangles = {0, 1, 4, 4, 1, 2, 4, 2, 3, 0, 4, 3};  // counter-clockwise seen from +Z
+    plate.faceColours = {{200, 0, 0}, {200, 0, 0}, {0, 0, 200}, {200, 0, 0}};
+    AtlasCharts charts = computeCharts(plate.view());
+    ASSERT_EQ(charts.chartCount(), 1u);
+    const CrowdedFaces crowded = separateCrowdedFaces(plate.view(), charts, {8.0, 0.5});
+    EXPECT_EQ(crowded.separatedFaces, 1u);
+    ASSERT_EQ(charts.chartCount(), 2u);
+    EXPECT_EQ(charts.chartFaces[charts.chartFirstFace[1]], 0u) << "the sliver is the face separated";
+}
