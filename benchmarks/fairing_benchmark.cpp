@@ -77,33 +77,34 @@ void BM_LanczosPass(benchmark::State &state) {
 }
 BENCHMARK(BM_LanczosPass)->Unit(benchmark::kMillisecond);
 
-// What a caller pays per call: validation, voxel-size detection, adjacency, copy, one pass.
-void BM_FairModifiedLanczosCall(benchmark::State &state) {
+// One whole call of `fair` on fresh positions of the sphere, per iteration.
+template <class Fair>
+void timeWholeCalls(benchmark::State &state, Fair &&fair) {
     const SphereMesh &m = mesh();
     std::vector<glm::vec3> positions;
     for (auto _ : state) {
         state.PauseTiming();
         positions = m.positions;
         state.ResumeTiming();
-        fairModifiedLanczos(positions.data(), positions.size(), m.offsets.data(), m.quads.data(), m.quadCount(), nullptr);
+        fair(m, positions);
         benchmark::DoNotOptimize(positions.data());
     }
     setCounters(state);
+}
+
+// What a caller pays per call: validation, voxel-size detection, adjacency, copy, one pass.
+void BM_FairModifiedLanczosCall(benchmark::State &state) {
+    timeWholeCalls(state, [](const SphereMesh &m, std::vector<glm::vec3> &p) {
+        fairModifiedLanczos(p.data(), p.size(), m.offsets.data(), m.quads.data(), m.quadCount(), nullptr);
+    });
 }
 BENCHMARK(BM_FairModifiedLanczosCall)->Unit(benchmark::kMillisecond);
 
 // The second mode with its defaults, everything included (classification, normals, fitting).
 void BM_FairConstrainedCall(benchmark::State &state) {
-    const SphereMesh &m = mesh();
-    std::vector<glm::vec3> positions;
-    for (auto _ : state) {
-        state.PauseTiming();
-        positions = m.positions;
-        state.ResumeTiming();
-        fairConstrained(positions.data(), positions.size(), m.offsets.data(), m.quads.data(), m.quadCount(), nullptr);
-        benchmark::DoNotOptimize(positions.data());
-    }
-    setCounters(state);
+    timeWholeCalls(state, [](const SphereMesh &m, std::vector<glm::vec3> &p) {
+        fairConstrained(p.data(), p.size(), m.offsets.data(), m.quads.data(), m.quadCount(), nullptr);
+    });
 }
 BENCHMARK(BM_FairConstrainedCall)->Unit(benchmark::kMillisecond);
 

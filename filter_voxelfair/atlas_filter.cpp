@@ -93,30 +93,35 @@ bool FilterVoxelfairPlugin::applyTextureAtlas(MeshModel &m, const RichParameterL
         const PolygonArrays arrays = polygonArrays(m.cm);
         const std::vector<PartArrays> parts = splitByPart(arrays, m.cm);
         const PartArrays *largest = nullptr;
-        std::vector<std::pair<int, float>> partVoxel;
-        for (const PartArrays &part : parts) {
+        std::vector<float> partVoxel(parts.size());
+        for (size_t k = 0; k < parts.size(); ++k) {
+            const PartArrays &part = parts[k];
             if (largest == nullptr || part.polygonCount() > largest->polygonCount()) largest = &part;
-            partVoxel.emplace_back(part.part, detectVoxelSize(part.positions.data(), part.positions.size(),
-                                                              part.polygonOffsets.data(), part.polygonIndices.data(),
-                                                              part.polygonCount()));
+            partVoxel[k] = detectVoxelSize(part.positions.data(), part.positions.size(), part.polygonOffsets.data(),
+                                           part.polygonIndices.data(), part.polygonCount());
         }
-        voxelSize = largest ? partVoxel[size_t(largest - parts.data())].second
+        voxelSize = largest ? partVoxel[size_t(largest - parts.data())]
                             : detectVoxelSize(arrays.positions.data(), arrays.positions.size(),
                                               arrays.polygonOffsets.data(), arrays.polygonIndices.data(),
                                               arrays.polygonCount());
         if (!(voxelSize > 0.0f) || !std::isfinite(voxelSize)) voxelSize = 1.0f;
+        // Part number -> texel scale (part numbers are small, as splitByPart assumes).
+        std::vector<float> scaleOfPart;
+        for (size_t k = 0; k < parts.size(); ++k) {
+            const size_t number = size_t(parts[k].part);
+            if (number >= scaleOfPart.size()) scaleOfPart.resize(number + 1, 1.0f);
+            const float scale = voxelSize / partVoxel[k];
+            if (partVoxel[k] > 0.0f && std::isfinite(scale) && scale > 0.0f) scaleOfPart[number] = scale;
+        }
         const std::vector<int> facePart = parts.empty() ? std::vector<int>() : facePartNumbers(m.cm);
         bool scaled = false;
         if (!facePart.empty()) {
             faceScale.assign(input.faceOf.size(), 1.0f);
-            for (size_t i = 0; i < input.faceOf.size(); ++i)
-                for (const auto &[part, size] : partVoxel)
-                    if (part == facePart[input.faceOf[i]]) {
-                        const float scale = voxelSize / size;
-                        if (size > 0.0f && std::isfinite(scale) && scale > 0.0f) faceScale[i] = scale;
-                        scaled = scaled || faceScale[i] != 1.0f;
-                        break;
-                    }
+            for (size_t i = 0; i < input.faceOf.size(); ++i) {
+                const int part = facePart[input.faceOf[i]];
+                if (part >= 0 && size_t(part) < scaleOfPart.size()) faceScale[i] = scaleOfPart[size_t(part)];
+                scaled = scaled || faceScale[i] != 1.0f;
+            }
         }
         if (scaled) input.mesh.faceTexelScale = faceScale.data();
     }

@@ -182,22 +182,26 @@ void writePositions(const PolygonArrays &arrays, const std::vector<glm::vec3> &p
     }
 }
 
+// The per-face part attribute io_vxl writes ("voxelfair_part"); false when the mesh has none.
+static bool findPartAttribute(const CMeshO &mesh, CMeshO::PerFaceAttributeHandle<int> &partOf) {
+    if (!vcg::tri::HasPerFaceAttribute(mesh, "voxelfair_part")) return false;
+    // vcglib's attribute lookup takes a mutable mesh; nothing is written through it.
+    CMeshO &lookup = const_cast<CMeshO &>(mesh);
+    partOf = vcg::tri::Allocator<CMeshO>::FindPerFaceAttribute<int>(lookup, "voxelfair_part");
+    return vcg::tri::Allocator<CMeshO>::IsValidHandle(lookup, partOf);
+}
+
 std::vector<int> facePartNumbers(const CMeshO &mesh) {
-    if (!vcg::tri::HasPerFaceAttribute(mesh, "voxelfair_part")) return {};
-    CMeshO &lookup = const_cast<CMeshO &>(mesh);  // vcglib's lookup takes a mutable mesh
-    auto partOf = vcg::tri::Allocator<CMeshO>::FindPerFaceAttribute<int>(lookup, "voxelfair_part");
-    if (!vcg::tri::Allocator<CMeshO>::IsValidHandle(lookup, partOf)) return {};
+    CMeshO::PerFaceAttributeHandle<int> partOf;
+    if (!findPartAttribute(mesh, partOf)) return {};
     std::vector<int> parts(mesh.face.size());
     for (size_t f = 0; f < mesh.face.size(); ++f) parts[f] = partOf[f];
     return parts;
 }
 
 std::vector<PartArrays> splitByPart(const PolygonArrays &arrays, const CMeshO &mesh) {
-    if (!vcg::tri::HasPerFaceAttribute(mesh, "voxelfair_part")) return {};
-    // vcglib's attribute lookup takes a mutable mesh; nothing is written through it.
-    CMeshO &lookup = const_cast<CMeshO &>(mesh);
-    auto partOf = vcg::tri::Allocator<CMeshO>::FindPerFaceAttribute<int>(lookup, "voxelfair_part");
-    if (!vcg::tri::Allocator<CMeshO>::IsValidHandle(lookup, partOf)) return {};
+    CMeshO::PerFaceAttributeHandle<int> partOf;
+    if (!findPartAttribute(mesh, partOf)) return {};
 
     // Most meshes are one part: find out before copying anything.
     bool severalParts = false;

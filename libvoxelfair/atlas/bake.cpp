@@ -163,9 +163,17 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
     };
     // One pass: a face paints the texels whose centre it holds (no other face holds them), then
     // those it only overlaps that nothing painted yet; a later face's centre texels overwrite
-    // such edge texels.
+    // such edge texels. Crisp bakes also note the faces too thin for the centre rule (below).
+    const bool crisp = out.source == BakeSource::FaceColours;
+    std::vector<uint32_t> thin;
+    glm::dvec2 points[4] = {};
     for (size_t f = 0; f < mesh.faceCount; ++f) {
         load(f);
+        if (crisp) {
+            const double inradius = faceInteriorPoints(q, points);
+            if (inradius > 0 && inradius < std::sqrt(2.0))
+                thin.push_back(uint32_t(f));
+        }
         rasterCentres(q[0], q[1], q[2], size, size,
                       [&](int x, int y) { paint(x, y, colourAt(f, q, x + 0.5, y + 0.5), kCentre); });
         rasterConservative(q[0], q[1], q[2], kBakeMargin, size, size, [&](int x, int y) {
@@ -179,17 +187,12 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
     // thick are untouched: their interior points lie over their own centre texels. Where two
     // thin faces of different colours would share such a texel, the atlas gave one of them a
     // chart of its own beforehand (crowded_faces.h), so the order does not matter.
-    if (out.source == BakeSource::FaceColours) {
-        glm::dvec2 points[4] = {};
-        for (size_t f = 0; f < mesh.faceCount; ++f) {
-            load(f);
-            const double inradius = faceInteriorPoints(q, points);
-            if (!(inradius > 0 && inradius < std::sqrt(2.0)))
-                continue;
-            for (const glm::dvec2 &p : points)
-                paint(std::clamp(int(std::floor(p.x)), 0, size - 1), std::clamp(int(std::floor(p.y)), 0, size - 1),
-                      mesh.faceColours[f], kCentre);
-        }
+    for (uint32_t f : thin) {
+        load(f);
+        faceInteriorPoints(q, points);
+        for (const glm::dvec2 &p : points)
+            paint(std::clamp(int(std::floor(p.x)), 0, size - 1), std::clamp(int(std::floor(p.y)), 0, size - 1),
+                  mesh.faceColours[f], kCentre);
     }
     out.dilation = options.dilation < 0 ? layout.gutter / 2 : std::min(options.dilation, size);
     dilate(canvas, out.dilation);

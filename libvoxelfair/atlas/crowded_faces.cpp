@@ -141,16 +141,18 @@ CrowdedFaces separateCrowdedFaces(const AtlasMesh &mesh, AtlasCharts &charts, co
             continue;
         const uint32_t first = charts.chartFirstFace[c], end = charts.chartFirstFace[c + 1];
         bool mixed = false;
+        for (uint32_t i = first + 1; i < end && !mixed; ++i)
+            mixed = colour(i) != colour(first);
         thin.clear();
         chartPoints.clear();
         glm::dvec2 p[4] = {};
         for (uint32_t i = first; i < end; ++i) {
-            mixed = mixed || colour(i) != colour(first);
             inradius[i] = points(i, p);
             if (inradius[i] < kReach)
                 thin.push_back(i);
-            for (const glm::dvec2 &q : p)
-                chartPoints.push_back({q, i});
+            if (mixed)
+                for (const glm::dvec2 &q : p)
+                    chartPoints.push_back({q, i});
         }
         out.thinFaces += thin.size();
         if (!mixed || thin.empty())

@@ -33,15 +33,7 @@ Bytes fixtureFile() {
 
 TEST(HostileHva, RealFileTruncatedAtEveryByte) {
     VOXELFAIR_LOAD_MODEL_OR_SKIP(hmec, "vxl/hmec.hva");  // 13 sections, 17 frames
-    SweepRecord record;
-    for (size_t n = 0; n < hmec.size(); ++n) {
-        const Bytes cut(hmec.begin(), hmec.begin() + std::ptrdiff_t(n));
-        const Attempt a = attempt(readOnly, cut);
-        record.add(a);
-        ASSERT_TRUE(survived(a, kHvaHeap, n)) << "cut at " << n;
-        ASSERT_TRUE(rejectedWithAnyOf(a, {"truncated", "does not match"})) << "cut at " << n;
-    }
-    record.print("hmec.hva prefixes");
+    sweepTruncations(readOnly, hmec, kHvaHeap, {"truncated", "does not match"}, "hmec.hva prefixes");
 }
 
 TEST(HostileHva, RandomBitFlips) {

@@ -67,6 +67,19 @@ void SweepRecord::print(const char *what) const {
                 what, inputs, accepted, maxPeakBytes, maxSeconds, longestMessage);
 }
 
+void sweepTruncations(Reader read, const Bytes &file, const HeapBound &bound,
+                      std::initializer_list<const char *> anyOf, const char *what) {
+    SweepRecord record;
+    for (size_t n = 0; n < file.size(); ++n) {
+        const Bytes cut(file.begin(), file.begin() + std::ptrdiff_t(n));
+        const Attempt a = attempt(read, cut);
+        record.add(a);
+        ASSERT_TRUE(survived(a, bound, n)) << "cut at " << n;
+        ASSERT_TRUE(rejectedWithAnyOf(a, anyOf)) << "cut at " << n;
+    }
+    record.print(what);
+}
+
 std::filesystem::path modelsDir() { return VOXELFAIR_MODELS_DIR; }
 
 Bytes loadModel(const std::string &relativePath) {

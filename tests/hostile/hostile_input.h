@@ -65,6 +65,11 @@ struct SweepRecord {
     void print(const char *what) const;
 };
 
+// Every proper prefix of `file` (a cut at each byte): each must survive within `bound` and be
+// rejected with a message containing one of `anyOf`. Prints the record as `what`.
+void sweepTruncations(Reader read, const Bytes &file, const HeapBound &bound,
+                      std::initializer_list<const char *> anyOf, const char *what);
+
 // A file of the shared models folder (../shared/models), or empty when it is absent; tests
 // then skip with a message naming the folder.
 std::filesystem::path modelsDir();

@@ -94,15 +94,7 @@ std::vector<VoxVoxel> cube(int side) {
 
 TEST(HostileVox, RealFileTruncatedAtEveryByte) {
     VOXELFAIR_LOAD_MODEL_OR_SKIP(robo, "vox/robo.vox");
-    SweepRecord record;
-    for (size_t n = 0; n < robo.size(); ++n) {
-        const Bytes cut(robo.begin(), robo.begin() + std::ptrdiff_t(n));
-        const Attempt a = attempt(readOnly, cut);
-        record.add(a);
-        ASSERT_TRUE(survived(a, kVoxHeap, n)) << "cut at " << n;
-        ASSERT_TRUE(rejectedWithAnyOf(a, {"truncated", "run past the end of the file"})) << "cut at " << n;
-    }
-    record.print("robo.vox prefixes");
+    sweepTruncations(readOnly, robo, kVoxHeap, {"truncated", "run past the end of the file"}, "robo.vox prefixes");
 }
 
 TEST(HostileVox, RandomBitFlips) {

@@ -98,16 +98,8 @@ rawvxl::RawVxl sharedSpans(const Bytes &column, size_t sections) {
 
 TEST(HostileVxl, RealFileTruncatedAtEveryByte) {
     VOXELFAIR_LOAD_MODEL_OR_SKIP(jeep, "vxl/jeep.vxl");
-    SweepRecord record;
-    for (size_t n = 0; n < jeep.size(); ++n) {
-        const Bytes cut(jeep.begin(), jeep.begin() + std::ptrdiff_t(n));
-        const Attempt a = attempt(readOnly, cut);
-        record.add(a);
-        ASSERT_TRUE(survived(a, kVxlHeap, n)) << "cut at " << n;
-        // Cut inside the section headers, the section count is what no longer fits.
-        ASSERT_TRUE(rejectedWithAnyOf(a, {"truncated", "cannot fit in a file of"})) << "cut at " << n;
-    }
-    record.print("jeep.vxl prefixes");
+    // Cut inside the section headers, the section count is what no longer fits.
+    sweepTruncations(readOnly, jeep, kVxlHeap, {"truncated", "cannot fit in a file of"}, "jeep.vxl prefixes");
 }
 
 TEST(HostileVxl, RandomBitFlips) {
