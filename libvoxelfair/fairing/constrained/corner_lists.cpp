@@ -1,0 +1,152 @@
+// The constrained fairing's connectivity, in one pass over the corners: the corners of live
+// polygons at each vertex with their next and previous vertices (a counting sort, CSR), the twin
+// of each corner, the creases, and each vertex's sweep wave.
+//
+// Contract (buildCorners; reads live, normal; fills vertexStart, vertexCorners, vertexNext,
+// vertexPrevious, twin, creases/creaseCount, sharpBoundary, and the waves into rank):
+// - vertexStart[v] .. vertexStart[v + 1] index v's corners (in corner order); vertexNext and
+//   vertexPrevious hold 8 entries of kNone past the last (read by 8-lane loads).
+// - twin[c] is the corner of the edge b -> a when c is a -> b and exactly one corner of another
+//   polygon runs each way between a and b; otherwise kNone, and c goes to sharpBoundary
+//   (boundary, non-manifold or misoriented edges are all kept sharp).
+// - creases lists the lower corner of each twinned edge whose polygons' normals meet at more than
+//   options.creaseAngleDegrees.
+// - rank[v] (used as the wave) is 0 when no neighbour of lower index in v's tile of kTileSize
+//   indices comes before it, else one more than the largest such neighbour's wave: vertices of one
+//   wave of a tile are never neighbours (sweep_layout.cpp orders the sweeps by it).
+#include "fairing/constrained/fairing_state.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+namespace voxelfair::constrained {
+namespace {
+
+// Index of the bit of 1 << i (i < 8) from (1 << i) * 0x1D >> 5 & 7 (a de Bruijn sequence).
+constexpr uint8_t kBitIndex[8] = {0, 1, 6, 2, 7, 5, 4, 3};
+
+}  // namespace
+
+template <bool kQuads>
+VOXELFAIR_NOINLINE void buildCorners(FairingState<kQuads> &s) {
+    // Counting sort by vertex: count into start[v + 2], then fill through start[v + 1], which
+    // leaves every start in place.
+    const Polygons<kQuads> k = s.k;
+    const size_t V = s.V;
+    const uint32_t cornerCount = s.cornerCount, *const indices = s.indices;
+    const uint8_t *const live = s.live;
+    uint32_t *const start = s.vertexStart, *const corners = s.vertexCorners, *const next = s.vertexNext,
+                   *const previous = s.vertexPrevious;
+    std::fill(start, start + V + 2, 0u);
+    for (uint32_t c = 0; c < cornerCount; ++c)
+        start[indices[c] + 2] += live[k.polygonOf(c)];
+    for (size_t v = 1; v < V + 1; ++v)
+        start[v + 1] += start[v];
+    for (uint32_t c = 0; c < cornerCount; ++c)
+        if (live[k.polygonOf(c)]) {
+            const uint32_t slot = start[indices[c] + 1]++;
+            corners[slot] = c;
+            next[slot] = k.nextVertex(c);
+            previous[slot] = k.previousVertex(c);
+        }
+    std::fill(next + start[V], next + start[V] + 8, kNone);  // read past by the 8-lane loads
+    std::fill(previous + start[V], previous + start[V] + 8, kNone);
+
+    // Twins: a -> b and the one edge b -> a, when no other polygon has either direction. Both
+    // directions show at a: a -> b as a corner at a whose next vertex is b, b -> a as a corner at a
+    // whose previous vertex is b; so a's own list decides.
+    uint32_t *const twin = s.twin, *const wave = s.rank;
+    std::fill(twin, twin + cornerCount, kNone);
+    // On the way: the creases (listed without branching on the test, whose outcome follows no
+    // pattern) and the corners without twin.
+    const glm::vec3 *const normal = s.normal;
+    const float creaseCos = std::cos(s.options.creaseAngleDegrees * 3.14159265f / 180.0f);
+    uint32_t *const creases = s.creases;
+    size_t creaseCount = 0;
+    auto noTwin = [&](uint32_t c, bool edge) {
+        if (edge)
+            s.sharpBoundary.push_back(c);
+    };
+    auto foundTwin = [&](uint32_t c, uint32_t t) {
+        twin[c] = t;
+        creases[creaseCount] = c;
+#ifdef VOXELFAIR_SSE2
+        creaseCount += t > c && dot3(load3(normal[k.polygonOf(c)]), load3(normal[k.polygonOf(t)])) < creaseCos;
+#else
+        creaseCount += t > c && glm::dot(normal[k.polygonOf(c)], normal[k.polygonOf(t)]) < creaseCos;
+#endif
+    };
+    std::fill(wave, wave + V, 0u);
+    for (size_t a = 0; a < V; ++a) {
+        const uint32_t first = start[a], count = start[a + 1] - first;
+        const size_t tileStart = a - a % kTileSize;
+        uint32_t w = 0;
+        // (Next vertices are enough: a free vertex has no sharp edge, so every edge a -> u has its
+        // twin u -> a, and only free vertices are ordered.)
+        for (uint32_t i = first; i < first + count; ++i) {
+            // Masked, not branched on: half the neighbours come before, in no pattern.
+            const uint32_t u = next[i], before = 0u - uint32_t(u < a && u >= tileStart);
+            w = std::max(w, (wave[u] + 1) & before);
+        }
+        wave[a] = w;
+#ifdef VOXELFAIR_SSE2
+        if (count <= 8) {
+            // 8 lanes compared at once: where the match is varies, a branch on it would mispredict
+            // for most corners. Lanes past `count` hold the next vertices'.
+            auto load = [](const uint32_t *x) { return _mm_loadu_si128(reinterpret_cast<const __m128i *>(x)); };
+            const __m128i next0 = load(next + first), next1 = load(next + first + 4),
+                          previous0 = load(previous + first), previous1 = load(previous + first + 4);
+            const unsigned lanes = (1u << count) - 1;
+            auto matches = [lanes](__m128i b, __m128i low, __m128i high) {
+                return (unsigned(_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(b, low)))) |
+                        unsigned(_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(b, high)))) << 4) &
+                       lanes;
+            };
+            for (uint32_t i = 0; i < count; ++i) {
+                const uint32_t b = next[first + i];
+                const __m128i bb = _mm_set1_epi32(int(b));
+                const unsigned out = matches(bb, next0, next1), in = matches(bb, previous0, previous1);
+                // Exactly one each way (out holds i at least).
+                const uint32_t c = corners[first + i];
+                if (b == a || (out & (out - 1)) != 0 || in == 0 || (in & (in - 1)) != 0) {
+                    noTwin(c, b != a);
+                    continue;
+                }
+                const uint32_t back = kBitIndex[(in * 0x1Du) >> 5 & 7];  // in is a power of 2 below 256
+                const uint32_t t = k.previousCorner(corners[first + back]);
+                if (k.polygonOf(t) != k.polygonOf(c))
+                    foundTwin(c, t);
+                else
+                    noTwin(c, true);
+            }
+            continue;
+        }
+#endif
+        for (uint32_t i = first; i < first + count; ++i) {
+            const uint32_t b = next[i];
+            if (b == a)
+                continue;  // no edge
+            uint32_t out = 0, in = 0, back = 0;
+            for (uint32_t j = first; j < first + count; ++j) {
+                out += next[j] == b;
+                if (previous[j] == b) {
+                    back = j;
+                    ++in;
+                }
+            }
+            const uint32_t c = corners[i], t = k.previousCorner(corners[back]);
+            if (out == 1 && in == 1 && k.polygonOf(t) != k.polygonOf(c))
+                foundTwin(c, t);
+            else
+                noTwin(c, true);
+        }
+    }
+    s.creaseCount = creaseCount;
+}
+
+template void buildCorners(FairingState<true> &);
+template void buildCorners(FairingState<false> &);
+
+}  // namespace voxelfair::constrained

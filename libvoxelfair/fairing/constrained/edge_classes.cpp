@@ -1,0 +1,193 @@
+// Step 1 of the constrained fairing (constrained_fairing.h): which edges stay sharp, and from
+// them what each vertex may do.
+//
+// Contract (classifyEdges; any order of the lists gives the same verdicts): every crease (one
+// corner per edge: polygons meeting at more than creaseAngle) is flagged kConvex or kConcave on
+// both corners; every corner in sharpBoundary (no twin) gets kSharp. With keepSharpEdges, a crease
+// is a staircase step when a polygon beside it is a riser: within stepReach quads, walking across
+// flat quads away from the crease, the next crease turns the other way. Otherwise it is genuine
+// (kSharp on both corners, listed in sharpCreases), unless the walks on both of its sides end,
+// within featureReach quads, on staircase steps (a lone straight edge in a rounded part), or it
+// is an isolated single edge (its two ends touch no other genuine edge). Counts into the report.
+// The idea of separating staircase from feature edges is from Moench, Adler and Preim,
+// "Staircase-aware smoothing of medical surface meshes" (VCBM 2010); the riser test is ours.
+//
+// Contract (findVertexKinds): a vertex with 2 sharp edges is EdgeLine (its polygons listed in
+// linePolygons); with 1 or 3+, or unselected, or without live polygons, Pinned; otherwise Free,
+// or FreeIrregular when it has more than kRegularValence neighbours or an EdgeLine neighbour.
+#include "fairing/constrained/fairing_state.h"
+
+#include <algorithm>
+
+#include <glm/geometric.hpp>
+
+namespace voxelfair::constrained {
+
+template <bool kQuads>
+VOXELFAIR_NOINLINE void classifyEdges(const Polygons<kQuads> &k, const uint32_t *twin, const glm::vec3 *positions,
+                                      const glm::vec3 *unitNormal, const ConstrainedFairingOptions &options,
+                                      size_t vertexCount, const uint32_t *creases, size_t creaseCount, uint8_t *flags,
+                                      std::vector<uint32_t> &sharpBoundary, std::vector<uint32_t> &sharpCreases,
+                                      ConstrainedFairingReport &report) {
+    // Convex or concave: the far end of the other polygon's next edge lies below this polygon's
+    // plane, or not.
+    for (const uint32_t *crease = creases; crease != creases + creaseCount; ++crease) {
+        const uint32_t c = *crease, t = twin[c];  // t runs b -> a
+        const uint32_t a = k.indices[c], far = k.nextVertex(k.nextCorner(t));
+        flags[c] = flags[t] =
+            glm::dot(unitNormal[k.polygonOf(c)], positions[far] - positions[a]) < 0.0f ? kConvex : kConcave;
+    }
+    report.creaseEdges = creaseCount;
+    for (uint32_t c : sharpBoundary)
+        flags[c] |= kSharp;
+    report.sharpEdges = sharpBoundary.size();
+    if (!options.keepSharpEdges)
+        return;
+
+    // Walks across quads away from the edge of corner c, through flat edges, to the next crease:
+    // its corner and how many quads were crossed (kNone past maxSteps, at a boundary or at a
+    // polygon that is not a quad).
+    struct WalkEnd {
+        uint32_t corner = kNone;
+        int steps = 0;
+    };
+    auto walk = [&](uint32_t c, int maxSteps) {
+        for (int step = 1; step <= maxSteps && k.inQuad(c); ++step) {
+            const uint32_t opposite = k.oppositeCorner(c);
+            if (flags[opposite] & kCrease)
+                return WalkEnd{opposite, step};
+            if (twin[opposite] == kNone)
+                break;
+            c = twin[opposite];
+        }
+        return WalkEnd{};
+    };
+    auto turn = [&](uint32_t c) { return flags[c] & kCrease; };
+
+    struct Candidate {
+        uint32_t corner;
+        bool thin;
+    };
+    std::vector<Candidate> candidates;
+    for (const uint32_t *crease = creases; crease != creases + creaseCount; ++crease) {
+        const uint32_t c = *crease, t = twin[c];
+        // Most creases of a staircase turn back one quad away on either side: a step, whatever
+        // the walks find further (the nearest crease decides below).
+        if (k.inQuad(c) && (flags[k.oppositeCorner(c)] & kCrease) && turn(k.oppositeCorner(c)) != turn(c))
+            continue;
+        if (k.inQuad(t) && (flags[k.oppositeCorner(t)] & kCrease) && turn(k.oppositeCorner(t)) != turn(c))
+            continue;
+        const WalkEnd side[2] = {walk(c, options.stepReach), walk(t, options.stepReach)};
+        // The nearest crease within stepReach decides: turning back = a riser (staircase);
+        // turning the same way one quad away = a 1-voxel plate or rod (genuine).
+        int nearest = options.stepReach + 1;
+        for (const WalkEnd &end : side)
+            if (end.corner != kNone)
+                nearest = std::min(nearest, end.steps);
+        bool step = false, sameAtNearest = false;
+        for (const WalkEnd &end : side)
+            if (end.corner != kNone && end.steps == nearest)
+                (turn(end.corner) != turn(c) ? step : sameAtNearest) = true;
+        const bool isThin = !step && sameAtNearest && nearest == 1;
+        if (!step && !isThin)
+            for (const WalkEnd &end : side)
+                if (end.corner != kNone && turn(end.corner) != turn(c))
+                    step = true;
+        if (step)
+            continue;
+        flags[c] |= kSharp;
+        flags[t] |= kSharp;
+        candidates.push_back({c, isThin});
+    }
+    if (candidates.empty())
+        return;
+    auto unsharpen = [&](uint32_t c) {
+        flags[c] &= uint8_t(~kSharp);
+        flags[twin[c]] &= uint8_t(~kSharp);
+    };
+    // A straight edge whose faces end, both ways, on staircase steps is a flat run of a rounded
+    // part (a circle of radius 3 voxelizes with a 5-voxel straight corner).
+    std::vector<uint32_t> demoted;
+    if (options.featureReach > 0)
+        for (const Candidate &candidate : candidates) {
+            const uint32_t c = candidate.corner;
+            if (candidate.thin)
+                continue;
+            const uint32_t a = walk(c, options.featureReach).corner, b = walk(twin[c], options.featureReach).corner;
+            if (a != kNone && b != kNone && !(flags[a] & kSharp) && !(flags[b] & kSharp))
+                demoted.push_back(c);
+        }
+    for (uint32_t c : demoted)
+        unsharpen(c);
+    // A single sharp edge touching no other is a corner of a small pole terrace, not a feature.
+    std::vector<uint8_t> degree(vertexCount, 0);
+    for (const Candidate &candidate : candidates)
+        if (flags[candidate.corner] & kSharp)
+            for (uint32_t v : {k.indices[candidate.corner], k.nextVertex(candidate.corner)})
+                degree[v] = uint8_t(std::min(degree[v] + 1, 2));
+    for (const Candidate &candidate : candidates) {
+        const uint32_t c = candidate.corner;
+        if ((flags[c] & kSharp) && degree[k.indices[c]] == 1 && degree[k.nextVertex(c)] == 1)
+            unsharpen(c);
+    }
+    for (const Candidate &candidate : candidates)
+        if (flags[candidate.corner] & kSharp)
+            sharpCreases.push_back(candidate.corner);
+    report.sharpEdges += sharpCreases.size();
+}
+
+template <bool kQuads>
+VOXELFAIR_NOINLINE void findVertexKinds(FairingState<kQuads> &s) {
+    const Polygons<kQuads> k = s.k;
+    const size_t V = s.V;
+    VertexKind *const kind = s.kind;
+    const uint32_t *const start = s.vertexStart, *const next = s.vertexNext;
+    const bool anySharp = !s.sharpBoundary.empty() || !s.sharpCreases.empty();
+    std::vector<uint8_t> sharpDegree(anySharp ? V : 0, 0);
+    for (const std::vector<uint32_t> *edges : {&s.sharpBoundary, &s.sharpCreases})
+        for (uint32_t c : *edges)
+            for (uint32_t v : {s.indices[c], k.nextVertex(c)})
+                sharpDegree[v] = uint8_t(std::min(sharpDegree[v] + 1, 3));
+    size_t pinned = 0;
+    for (size_t v = 0; v < V; ++v) {
+        if (kind[v] == VertexKind::Skipped || (!anySharp && !s.selected && start[v] < start[v + 1]))
+            continue;  // (the common case: free)
+        const uint8_t degree = anySharp ? sharpDegree[v] : 0;
+        if ((s.selected && !s.selected[v]) || start[v] == start[v + 1] || (degree != 0 && degree != 2)) {
+            kind[v] = VertexKind::Pinned;
+            ++pinned;
+        } else if (degree == 2) {
+            kind[v] = VertexKind::EdgeLine;
+            s.lineVertices.push_back(uint32_t(v));
+        }
+    }
+    s.report.pinnedVertices = pinned;
+    s.report.edgeLineVertices = s.lineVertices.size();
+    const bool anyLine = !s.lineVertices.empty();
+    for (size_t v = 0; v < V; ++v) {
+        if (kind[v] != VertexKind::Free)
+            continue;
+        bool regular = start[v + 1] - start[v] <= kRegularValence;
+        for (uint32_t i = start[v]; anyLine && regular && i < start[v + 1]; ++i)
+            regular = kind[next[i]] != VertexKind::EdgeLine;
+        if (!regular)
+            kind[v] = VertexKind::FreeIrregular;
+    }
+    s.linePolygonStart.push_back(0);
+    for (uint32_t v : s.lineVertices) {
+        for (uint32_t i = start[v]; i < start[v + 1]; ++i)
+            s.linePolygons.push_back(k.polygonOf(s.vertexCorners[i]));
+        s.linePolygonStart.push_back(uint32_t(s.linePolygons.size()));
+    }
+}
+
+#define VOXELFAIR_INSTANTIATE(kQuads)                                                                                  \
+    template void classifyEdges(const Polygons<kQuads> &, const uint32_t *, const glm::vec3 *, const glm::vec3 *,      \
+                                const ConstrainedFairingOptions &, size_t, const uint32_t *, size_t, uint8_t *,        \
+                                std::vector<uint32_t> &, std::vector<uint32_t> &, ConstrainedFairingReport &);         \
+    template void findVertexKinds(FairingState<kQuads> &);
+VOXELFAIR_INSTANTIATE(true)
+VOXELFAIR_INSTANTIATE(false)
+#undef VOXELFAIR_INSTANTIATE
+
+}  // namespace voxelfair::constrained

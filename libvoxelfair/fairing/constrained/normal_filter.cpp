@@ -1,0 +1,143 @@
+// Step 2 of the constrained fairing (constrained_fairing.h): polygon normals averaged with their
+// neighbours across smooth edges, never across a sharp one.
+//
+// Why it works on a staircase: the sum of unit face normals over a patch is the true normal times
+// the patch's projected area, so averaging removes the steps without bias, and a sphere's averaged
+// normals stay radial (no shrinking). A trous (Holschneider et al., "A real-time algorithm for
+// signal analysis with the help of the wavelet transform", 1989): level i averages each polygon
+// with the four polygons 2^i quads straight across its edges, so 3 levels reach as far as about
+// 12 plain sweeps.
+//
+// Contract (buildLevels; reads twin, sharpBoundary, sharpCreases; turns twin into level 0 and
+// fills levels 1 .. storedLevels - 1 after it): level i of corner c is the corner by which a walk
+// straight across c's edge enters the polygon 2^i quads away; kNone when a sharp edge, a hole or
+// a non-quad is in the way (at level 0: the twin across smooth edges, any polygon). Level i + 1
+// is level i taken twice (pointer doubling); the top level, used only by the first pass, is
+// looked up through the level below (FairingState::doubled).
+//
+// Contract (filterNormals; reads normal, the level tables; fills normal, vertexNormal): `levels`
+// Jacobi rounds, each normal[p] <- normalize(normal[p] + the four level-i neighbours' normals, a
+// missing one counting as zero); then vertexNormal[v] = normalize(sum of v's polygons' filtered
+// normals), summed polygon by polygon. The quad path gives the same bits as the general one.
+#include "fairing/constrained/fairing_state.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace voxelfair::constrained {
+
+template <bool kQuads>
+VOXELFAIR_NOINLINE void buildLevels(FairingState<kQuads> &s) {
+    uint32_t *const twin = s.twin;
+    for (const std::vector<uint32_t> *edges : {&s.sharpBoundary, &s.sharpCreases})
+        for (uint32_t c : *edges)
+            if (twin[c] != kNone) {
+                twin[twin[c]] = kNone;
+                twin[c] = kNone;
+            }
+    for (int level = 1; level < s.storedLevels; ++level) {
+        const uint32_t *below = s.levelTable(level - 1);
+        uint32_t *table = twin + size_t(level) * s.cornerCount;
+        for (uint32_t c = 0; c < s.cornerCount; ++c)
+            table[c] = s.doubled(below, c);
+    }
+}
+
+namespace {
+
+#ifdef VOXELFAIR_SSE2
+// One level of filterNormals on quads, a normal per register and four normalized at once (a
+// square root and a division each otherwise make up most of the time): the same sums and
+// products, so the same results. Loads and stores of 16 bytes at the 12-byte normals read one
+// float past (arrays of P + 2) and write 0 into the next normal's x (its own turn comes next;
+// [P] stays 0).
+template <bool kQuads>
+VOXELFAIR_NOINLINE void filterQuads(FairingState<kQuads> &s, const uint32_t *table, bool composed, bool toVertices) {
+    const glm::vec3 *const normal = s.normal;
+    glm::vec3 *const filtered = s.filtered;
+    VertexNormal *const vertexNormal = s.vertexNormal;
+    const uint32_t *const indices = s.indices;
+    const size_t P = s.P;
+    const uint32_t none = uint32_t(P);
+    const __m128 xyz = _mm_castsi128_ps(_mm_set_epi32(0, -1, -1, -1));
+    auto load = [&](uint32_t p) { return _mm_loadu_ps(&normal[p].x); };
+    auto sumAround = [&](size_t p) {
+        const uint32_t *entry = table + 4 * p;
+        __m128 sum = load(uint32_t(p));
+        for (uint32_t i = 0; i < 4; ++i) {
+            uint32_t e = entry[i];
+            if (composed && e != kNone)
+                e = table[e ^ 2u];
+            sum = _mm_add_ps(sum, load(e != kNone ? e >> 2 : none));
+        }
+        return _mm_and_ps(sum, xyz);
+    };
+    auto store = [&](size_t p, __m128 unit) {
+        _mm_storeu_ps(&filtered[p].x, unit);
+        if (!toVertices)
+            return;
+        for (uint32_t i = 0; i < 4; ++i) {
+            float *n = &vertexNormal[indices[4 * p + i]].n.x;
+            _mm_store_ps(n, _mm_add_ps(_mm_load_ps(n), unit));
+        }
+    };
+    size_t p = 0;
+    for (; p + 4 <= P; p += 4) {
+        __m128 a = sumAround(p), b = sumAround(p + 1), c = sumAround(p + 2), d = sumAround(p + 3);
+        normalizeFour(a, b, c, d);
+        store(p, a);
+        store(p + 1, b);
+        store(p + 2, c);
+        store(p + 3, d);
+    }
+    for (; p < P; ++p) {
+        __m128 a = sumAround(p), b = a, c = a, d = a;
+        normalizeFour(a, b, c, d);
+        store(p, a);
+    }
+}
+#endif
+
+}  // namespace
+
+template <bool kQuads>
+VOXELFAIR_NOINLINE void filterNormals(FairingState<kQuads> &s, int levels) {
+    const Polygons<kQuads> k = s.k;
+    std::fill(s.vertexNormal, s.vertexNormal + s.V, VertexNormal{glm::vec3(0.0f), 0.0f});
+    for (int level = 0; level < levels; ++level) {
+        const bool composed = level == s.storedLevels;  // the top level of the first pass
+        const bool toVertices = level == levels - 1;
+        const uint32_t *table = s.levelTable(composed ? level - 1 : level);
+#ifdef VOXELFAIR_SSE2
+        if constexpr (kQuads) {
+            filterQuads(s, table, composed, toVertices);
+            std::swap(s.normal, s.filtered);
+            continue;
+        }
+#endif
+        for (size_t p = 0; p < s.P; ++p) {
+            glm::vec3 sum = s.normal[p];
+            for (uint32_t c = k.first(p); c < k.last(p); ++c) {
+                const uint32_t e = composed ? s.doubled(table, c) : table[c];
+                sum += s.normal[e != kNone ? k.polygonOf(e) : uint32_t(s.P)];
+            }
+            s.filtered[p] = normalizedOrZero(sum);
+            if (toVertices)
+                for (uint32_t c = k.first(p); c < k.last(p); ++c)
+                    s.vertexNormal[s.indices[c]].n += s.filtered[p];
+        }
+        std::swap(s.normal, s.filtered);
+    }
+    if (levels == 0)
+        for (size_t p = 0; p < s.P; ++p)
+            for (uint32_t c = k.first(p); c < k.last(p); ++c)
+                s.vertexNormal[s.indices[c]].n += s.normal[p];
+    normalizeAll(&s.vertexNormal[0].n, s.V, sizeof(VertexNormal));
+}
+
+template void buildLevels(FairingState<true> &);
+template void buildLevels(FairingState<false> &);
+template void filterNormals(FairingState<true> &, int);
+template void filterNormals(FairingState<false> &, int);
+
+}  // namespace voxelfair::constrained

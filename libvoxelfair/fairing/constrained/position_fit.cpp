@@ -1,0 +1,197 @@
+// Steps 3 and 4 of the constrained fairing (constrained_fairing.h): the vertices are moved to fit
+// the filtered normals, each inside the cell around its input position.
+//
+// Step 3 follows Sun, Rosin, Martin and Langbein, "Fast and effective feature-preserving mesh
+// denoising" (IEEE TVCG 13(5), 2007). A free vertex v with normal n moves along n so that each
+// edge v-u becomes perpendicular to s = n + n_u (the bisector of the two normals, which holds
+// exactly on a sphere): least squares along n gives a move of 2 sum s.(x_u - x_v) / sum |s|^2.
+// A neighbour that is not free lends n (s = 2n); one more than 90 degrees away (another sheet) is
+// left out (an edge is used when |s|^2 > 2), and its vertex goes through the general path from
+// then on. With x = input + d and n_u . d_u kept per vertex,
+//     sum s.(x_u - x_v) = base + n . sum d_u + sum n_u . d_u - sumS . d_v,
+// so a sweep reads only the neighbours' offsets (position_kernel.h). A vertex on a sharp edge
+// line moves towards the planes of its polygons through their centroids (keeps the edge sharp).
+//
+// Step 4 (Gibson, "Constrained elastic surface nets", MICCAI 1998): on the voxel surface the true
+// surface crosses the cube spanned by the 8 voxel centres around each lattice vertex, so every
+// vertex stays within `half` of its input position per axis. This bounds every move, keeps
+// 1-voxel plates and rods from collapsing, and keeps the volume.
+//
+// Contract: fitFreeVertices (reads vertexNormal, input, kind; fills fit, regularBlock, offset's
+// alongNormal) prepares one pass; sweep(forward) runs one Gauss-Seidel sweep, edge-line vertices
+// then free ones, in slot order or its reverse, each clamped into its cell as it moves; finish
+// writes input + offset to the free and edge-line vertices and the report's counts.
+#include "fairing/constrained/fairing_state.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+namespace voxelfair::constrained {
+
+template <bool kQuads>
+VOXELFAIR_NOINLINE void fitFreeVertices(FairingState<kQuads> &s) {
+    // Vertex by vertex (neighbours' data are near in memory), into the slots' blocks; the empty
+    // slots' lanes were zeroed in buildSlots.
+    VertexKind *const kind = s.kind;
+    const VertexNormal *const vertexNormal = s.vertexNormal;
+    const glm::vec3 *const input = s.input;
+    const uint32_t *const rank = s.rank, *const start = s.vertexStart, *const next = s.vertexNext;
+    FitBlock *const fit = s.fit;
+    uint8_t *const regularBlock = s.regularBlock;
+    for (size_t v = 0; v < s.V; ++v) {
+        if (!isFree(kind[v]))
+            continue;
+        float sum2 = 0.0f, base = 0.0f;
+        bool allUsed = true;
+#ifdef VOXELFAIR_SSE2
+        // (Vertex normals are 16-byte blocks with a zero fourth float: whole loads.)
+        auto normalOf = [vertexNormal](uint32_t u) { return _mm_load_ps(&vertexNormal[u].n.x); };
+        const __m128 n = normalOf(uint32_t(v)), x = load3(input[v]);
+        __m128 sumS = _mm_setzero_ps(), products = sumS;  // base: the sum of products' lanes
+        for (uint32_t i = start[v]; i < start[v + 1]; ++i) {
+            const uint32_t u = next[i];
+            const __m128 e = _mm_add_ps(n, isFree(kind[u]) ? normalOf(u) : n);
+            const float e2 = dot3(e, e);
+            if (!(e2 > 2.0f)) {
+                allUsed = false;
+                continue;
+            }
+            sum2 += e2;
+            sumS = _mm_add_ps(sumS, e);
+            products = _mm_add_ps(products, _mm_mul_ps(e, _mm_sub_ps(load3(input[u]), x)));
+        }
+        base = dot3(products, _mm_set1_ps(1.0f));
+        alignas(16) float nOut[4], sOut[4];
+        _mm_store_ps(nOut, n);
+        _mm_store_ps(sOut, sumS);
+#else
+        const glm::vec3 n = vertexNormal[v].n;
+        glm::vec3 sumS(0.0f);
+        for (uint32_t i = start[v]; i < start[v + 1]; ++i) {
+            const uint32_t u = next[i];
+            const glm::vec3 e = s.edgeTerm(n, u);
+            const float e2 = glm::dot(e, e);
+            if (!(e2 > 2.0f)) {
+                allUsed = false;
+                continue;
+            }
+            sum2 += e2;
+            sumS += e;
+            base += glm::dot(e, input[u] - input[v]);
+        }
+        const float nOut[3] = {n.x, n.y, n.z}, sOut[3] = {sumS.x, sumS.y, sumS.z};
+#endif
+        const uint32_t slot = rank[v];
+        if (!allUsed)
+            kind[v] = VertexKind::FreeIrregular;
+        if (kind[v] != VertexKind::Free)
+            regularBlock[slot / 4] = 0;
+        FitBlock &f = fit[slot / 4];
+        const int lane = int(slot % 4);
+        f.stepScale[lane] = sum2 > 0.0f ? 2.0f / sum2 : 0.0f;
+        f.nx[lane] = nOut[0];
+        f.ny[lane] = nOut[1];
+        f.nz[lane] = nOut[2];
+        f.base[lane] = base;
+        f.sx[lane] = sOut[0];
+        f.sy[lane] = sOut[1];
+        f.sz[lane] = sOut[2];
+    }
+    // n . d with this pass's normals, slot by slot.
+    for (size_t slot = 0; slot < s.freeSlots; ++slot)
+        s.offset[slot].alongNormal = glm::dot(fit[slot / 4].n(int(slot % 4)), s.offset[slot].d);
+}
+
+namespace {
+
+// Each vertex of the block on its own, from its corner list.
+template <bool kQuads>
+VOXELFAIR_NOINLINE void moveIrregularBlock(FairingState<kQuads> &s, size_t block) {
+    const FitBlock &f = s.fit[block];
+    for (int lane = 0; lane < 4; ++lane) {
+        const uint32_t v = s.vertexAt[4 * block + lane];
+        if (v == kNone)
+            continue;
+        Offset &o = s.offset[4 * block + lane];
+        const glm::vec3 n = f.n(lane);
+        float along = f.base[lane] - glm::dot(f.sumS(lane), o.d);
+        for (uint32_t i = s.vertexStart[v]; i < s.vertexStart[v + 1]; ++i) {
+            const uint32_t u = s.vertexNext[i];
+            const glm::vec3 e = s.edgeTerm(n, u);
+            if (glm::dot(e, e) > 2.0f)
+                along += glm::dot(e, s.offset[s.rank[u]].d);
+        }
+        moveFreeVertex(f, lane, along, s.half, o);
+    }
+}
+
+}  // namespace
+
+template <bool kQuads>
+VOXELFAIR_NOINLINE void sweep(FairingState<kQuads> &s, bool forward) {
+    // On a sharp edge line: towards the plane of each polygon through its centroid.
+    const Polygons<kQuads> k = s.k;
+    const auto at = s.currentAt();
+    for (size_t line = 0; line < s.lineVertices.size(); ++line) {
+        const uint32_t v = s.lineVertices[line];
+        Offset &o = s.offset[s.rank[v]];
+        const glm::vec3 x = s.input[v] + o.d;
+        glm::vec3 move(0.0f);
+        for (uint32_t j = s.linePolygonStart[line]; j < s.linePolygonStart[line + 1]; ++j) {
+            const uint32_t p = s.linePolygons[j];
+            glm::vec3 centroid(0.0f);
+            for (uint32_t c = k.first(p); c < k.last(p); ++c)
+                centroid += at(c);
+            centroid /= float(k.arity(p));
+            move += s.normal[p] * glm::dot(s.normal[p], centroid - x);
+        }
+        move /= float(s.linePolygonStart[line + 1] - s.linePolygonStart[line]);
+        o.d = glm::clamp(o.d + move, -s.half, s.half);
+    }
+    // Free vertices, alternating direction so that no side of the mesh leads.
+    const FitBlock *const fit = s.fit;
+    const uint32_t *const neighbours = s.slotNeighbours;
+    const uint8_t *const regular = s.regularBlock;
+    Offset *const offset = s.offset;
+    const size_t blocks = s.freeSlots / 4;
+    const float half = s.half;
+    for (size_t i = 0; i < blocks; ++i) {
+        const size_t block = forward ? i : blocks - 1 - i;
+        if (regular[block])
+            moveFreeBlock(fit[block], neighbours + 4 * kRegularValence * block, offset, offset + 4 * block, half);
+        else
+            moveIrregularBlock(s, block);
+    }
+}
+
+template <bool kQuads>
+VOXELFAIR_NOINLINE void finish(FairingState<kQuads> &s) {
+    const float moved2 = 1e-12f * s.report.voxelSize * s.report.voxelSize, wall = s.half * (1.0f - 1e-5f);
+    float maxMove2 = 0.0f;
+    size_t moved = 0, clamped = 0;
+    for (size_t v = 0; v < s.V; ++v) {
+        if (!isFree(s.kind[v]) && s.kind[v] != VertexKind::EdgeLine)
+            continue;
+        const glm::vec3 d = s.offset[s.rank[v]].d;
+        s.positions[v] = s.input[v] + d;
+        const float d2 = glm::dot(d, d);
+        maxMove2 = std::max(maxMove2, d2);
+        moved += d2 > moved2;
+        clamped += std::max(std::abs(d.x), std::max(std::abs(d.y), std::abs(d.z))) >= wall;
+    }
+    s.report.movedVertices = moved;
+    s.report.clampedVertices = clamped;
+    s.report.maxDisplacement = std::sqrt(maxMove2);
+}
+
+template void fitFreeVertices(FairingState<true> &);
+template void fitFreeVertices(FairingState<false> &);
+template void sweep(FairingState<true> &, bool);
+template void sweep(FairingState<false> &, bool);
+template void finish(FairingState<true> &);
+template void finish(FairingState<false> &);
+
+}  // namespace voxelfair::constrained

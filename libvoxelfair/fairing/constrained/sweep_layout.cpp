@@ -1,0 +1,116 @@
+// Step 3's memory layout: the Gauss-Seidel order of the constrained fairing split into waves of
+// independent vertices, so the sweeps update four at a time (position_kernel.h) with the result
+// of the plain order.
+//
+// Why it is the same result: a sweep updates the free vertices in index order, and all that
+// matters for the result is, for each pair of neighbours, which goes first. In index order each
+// update mostly waits for the previous one (a neighbour); instead, within each tile of kTileSize
+// vertex indices, wave w holds the vertices whose neighbours of lower index in the tile are in
+// waves < w (corner_lists.cpp). Sweeping tile after tile and, in each, wave after wave (or all in
+// reverse) keeps the order of every pair, and the vertices of a wave never depend on each other.
+//
+// Contract (buildSlots; reads kind, the waves in rank, vertexStart, vertexNext; the setup's
+// temporaries in `scratch` are dead after it): each vertex gets a slot, rank[v]: the free
+// vertices tile by tile, wave by wave, each wave padded to whole blocks of four (empty slots,
+// vertexAt = kNone), then the other vertices, then one zero slot. Takes step 3's arrays by slot
+// (offset zeroed, vertexNormal, filtered, fit, slotNeighbours as byte offsets of the neighbours'
+// Offset, the zero slot where fewer than kRegularValence, regularBlock) so a sweep streams
+// through memory. Empty slots read the zero slot and have a zero fit: they move by 0.
+#include "fairing/constrained/fairing_state.h"
+
+#include <algorithm>
+
+namespace voxelfair::constrained {
+
+template <bool kQuads>
+VOXELFAIR_NOINLINE void buildSlots(FairingState<kQuads> &s) {
+    const size_t V = s.V;
+    const VertexKind *const kind = s.kind;
+    uint32_t *const rank = s.rank, *const wave = s.rank;  // a tile's waves are copied before its ranks are set
+    // The temporaries are dead: step 3's arrays go in their place, first the slots' vertices
+    // (room for each wave's padding: at most 3 empty slots per wave).
+    s.scratch.rewind({0, 0});
+    size_t room = 0;
+    for (size_t tileStart = 0; tileStart < V; tileStart += kTileSize) {
+        uint32_t waves = 0;
+        for (size_t v = tileStart; v < std::min(V, tileStart + kTileSize); ++v)
+            if (isFree(kind[v])) {
+                waves = std::max(waves, wave[v] + 1);
+                ++room;
+            }
+        room += 3 * size_t(waves);
+    }
+    uint32_t *const vertexAt = s.vertexAt = s.scratch.template take<uint32_t>(room);
+    std::vector<uint32_t> tileWave, waveStart;
+    size_t slots = 0;
+    for (size_t tileStart = 0; tileStart < V; tileStart += kTileSize) {
+        const size_t tileEnd = std::min(V, tileStart + kTileSize);
+        tileWave.assign(wave + tileStart, wave + tileEnd);
+        uint32_t waves = 0;
+        for (size_t v = tileStart; v < tileEnd; ++v)
+            if (isFree(kind[v]))
+                waves = std::max(waves, tileWave[v - tileStart] + 1);
+        waveStart.assign(waves + 1, 0);
+        for (size_t v = tileStart; v < tileEnd; ++v)
+            if (isFree(kind[v]))
+                ++waveStart[tileWave[v - tileStart] + 1];
+        for (uint32_t w = 0; w < waves; ++w)
+            waveStart[w + 1] = waveStart[w] + ((waveStart[w + 1] + 3) & ~3u);  // whole blocks
+        std::fill(vertexAt + slots, vertexAt + slots + waveStart[waves], kNone);
+        for (size_t v = tileStart; v < tileEnd; ++v)
+            if (isFree(kind[v])) {
+                const uint32_t slot = uint32_t(slots + waveStart[tileWave[v - tileStart]]++);
+                vertexAt[slot] = uint32_t(v);
+                rank[v] = slot;
+            }
+        slots += waveStart[waves];
+    }
+    const size_t freeSlots = s.freeSlots = slots;
+    uint32_t other = uint32_t(freeSlots);
+    for (size_t v = 0; v < V; ++v)
+        if (!isFree(kind[v]))
+            rank[v] = other++;
+    const uint32_t zeroSlot = other;
+
+    s.filtered = s.scratch.template take<glm::vec3>(s.P + 2);
+    s.filtered[s.P] = s.filtered[s.P + 1] = glm::vec3(0.0f);
+    s.vertexNormal = s.scratch.template take<VertexNormal>(V);
+    s.slotNeighbours = s.scratch.template take<uint32_t>(kRegularValence * freeSlots);
+    s.offset = s.scratch.template take<Offset>(zeroSlot + 1);
+    std::fill(s.offset, s.offset + zeroSlot + 1, Offset{0.0f, glm::vec3(0.0f)});
+    s.fit = s.scratch.template take<FitBlock>(freeSlots / 4);
+    s.regularBlock = s.scratch.template take<uint8_t>(freeSlots / 4);
+    // (moveFreeBlock reads slotNeighbours as byte offsets, which must fit 32 bits: beyond 2^28
+    // slots every vertex goes through the general path.)
+    const bool regularFits = zeroSlot < (1u << 28);
+    std::fill(s.regularBlock, s.regularBlock + freeSlots / 4, uint8_t(regularFits));  // see fitFreeVertices
+    // Free vertices' neighbours by slot (vertex by vertex: the neighbours' ranks are near in memory).
+    uint32_t *const slotNeighbours = s.slotNeighbours;
+    const uint32_t *const start = s.vertexStart, *const next = s.vertexNext;
+    for (size_t v = 0; v < V; ++v) {
+        if (!isFree(kind[v]))
+            continue;
+        uint32_t *out = slotNeighbours + kRegularValence * size_t(rank[v]);
+        const uint32_t count = kind[v] == VertexKind::Free ? start[v + 1] - start[v] : 0;
+        for (uint32_t i = 0; i < kRegularValence; ++i) {
+            // (Selected, not branched on: the count varies in no pattern.)
+            const uint32_t neighbour = rank[next[start[v] + std::min(i, std::max(count, 1u) - 1)]];
+            out[i] = uint32_t(sizeof(Offset)) * (i < count ? neighbour : zeroSlot);
+        }
+    }
+    for (size_t slot = 0; slot < freeSlots; ++slot) {
+        if (vertexAt[slot] != kNone)
+            continue;
+        std::fill(slotNeighbours + kRegularValence * slot, slotNeighbours + kRegularValence * (slot + 1),
+                  uint32_t(sizeof(Offset)) * zeroSlot);
+        FitBlock &f = s.fit[slot / 4];
+        const int lane = int(slot % 4);
+        f.stepScale[lane] = f.nx[lane] = f.ny[lane] = f.nz[lane] = 0.0f;
+        f.base[lane] = f.sx[lane] = f.sy[lane] = f.sz[lane] = 0.0f;
+    }
+}
+
+template void buildSlots(FairingState<true> &);
+template void buildSlots(FairingState<false> &);
+
+}  // namespace voxelfair::constrained
