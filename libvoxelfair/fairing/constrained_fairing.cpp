@@ -52,6 +52,8 @@ void run(constrained::FairingState<kQuads> &s) {
 
 }  // namespace
 
+inline namespace VOXELFAIR_SIMD_VARIANT {
+
 ConstrainedFairingReport fairConstrained(glm::vec3 *positions, size_t vertexCount, const uint32_t *polygonOffsets,
                                          const uint32_t *polygonIndices, size_t polygonCount,
                                          const uint8_t *vertexSelected, const ConstrainedFairingOptions &options) {
@@ -89,4 +91,5 @@ ConstrainedFairingReport fairConstrained(glm::vec3 *positions, size_t vertexCoun
     return report;
 }
 
+}  // namespace VOXELFAIR_SIMD_VARIANT
 }  // namespace voxelfair

@@ -41,6 +41,7 @@
 #pragma once
 
 #include "fairing/lanczos_fairing.h"  // FairingStatus
+#include "fairing/simd_variant.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -91,6 +92,8 @@ struct ConstrainedFairingReport {
     bool failed() const { return status == FairingStatus::InvalidMesh || status == FairingStatus::InvalidOptions; }
 };
 
+inline namespace VOXELFAIR_SIMD_VARIANT {  // sse2 or scalar: see simd_variant.h
+
 // Smooths `positions` in place. Polygons as in polygon_adjacency.h (polygonOffsets has
 // polygonCount + 1 entries); the staircase test needs quads (the voxel surface's), other
 // polygons are smoothed but their creases count as genuine. With `vertexSelected` (nullable,
@@ -101,5 +104,7 @@ ConstrainedFairingReport fairConstrained(glm::vec3 *positions, size_t vertexCoun
                                          const uint32_t *polygonIndices, size_t polygonCount,
                                          const uint8_t *vertexSelected,
                                          const ConstrainedFairingOptions &options = {});
+
+}  // namespace VOXELFAIR_SIMD_VARIANT
 
 }  // namespace voxelfair

@@ -22,6 +22,7 @@
 #include <glm/geometric.hpp>
 
 namespace voxelfair::constrained {
+inline namespace VOXELFAIR_SIMD_VARIANT {
 namespace {
 
 // Index of the bit of 1 << i (i < 8) from (1 << i) * 0x1D >> 5 & 7 (a de Bruijn sequence).
@@ -149,4 +150,5 @@ VOXELFAIR_NOINLINE void buildCorners(FairingState<kQuads> &s) {
 template void buildCorners(FairingState<true> &);
 template void buildCorners(FairingState<false> &);
 
+}  // namespace VOXELFAIR_SIMD_VARIANT
 }  // namespace voxelfair::constrained

@@ -22,6 +22,7 @@
 #include <glm/geometric.hpp>
 
 namespace voxelfair::constrained {
+inline namespace VOXELFAIR_SIMD_VARIANT {
 
 template <bool kQuads>
 VOXELFAIR_NOINLINE void classifyEdges(const Polygons<kQuads> &k, const uint32_t *twin, const glm::vec3 *positions,
@@ -190,4 +191,5 @@ VOXELFAIR_INSTANTIATE(true)
 VOXELFAIR_INSTANTIATE(false)
 #undef VOXELFAIR_INSTANTIATE
 
+}  // namespace VOXELFAIR_SIMD_VARIANT
 }  // namespace voxelfair::constrained

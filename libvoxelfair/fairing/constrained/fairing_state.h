@@ -32,6 +32,7 @@
 #include <glm/vec3.hpp>
 
 namespace voxelfair::constrained {
+inline namespace VOXELFAIR_SIMD_VARIANT {
 
 enum class VertexKind : uint8_t {
     Free,           // fitted along its normal to its neighbours (moveFreeBlock)
@@ -176,4 +177,5 @@ template <bool kQuads> void fitFreeVertices(FairingState<kQuads> &s);
 template <bool kQuads> void sweep(FairingState<kQuads> &s, bool forward);
 template <bool kQuads> void finish(FairingState<kQuads> &s);
 
+}  // namespace VOXELFAIR_SIMD_VARIANT
 }  // namespace voxelfair::constrained

@@ -25,6 +25,7 @@
 #include <utility>
 
 namespace voxelfair::constrained {
+inline namespace VOXELFAIR_SIMD_VARIANT {
 
 template <bool kQuads>
 VOXELFAIR_NOINLINE void buildLevels(FairingState<kQuads> &s) {
@@ -140,4 +141,5 @@ template void buildLevels(FairingState<false> &);
 template void filterNormals(FairingState<true> &, int);
 template void filterNormals(FairingState<false> &, int);
 
+}  // namespace VOXELFAIR_SIMD_VARIANT
 }  // namespace voxelfair::constrained

@@ -18,6 +18,7 @@
 #include <glm/vec3.hpp>
 
 namespace voxelfair::constrained {
+inline namespace VOXELFAIR_SIMD_VARIANT {
 
 constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
 
@@ -80,4 +81,5 @@ glm::vec3 areaNormal(const Position &at, uint32_t first, uint32_t last) {
     return normalizedOrZero(n);
 }
 
+}  // namespace VOXELFAIR_SIMD_VARIANT
 }  // namespace voxelfair::constrained

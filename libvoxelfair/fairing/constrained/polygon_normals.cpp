@@ -18,6 +18,7 @@
 #include <glm/geometric.hpp>
 
 namespace voxelfair::constrained {
+inline namespace VOXELFAIR_SIMD_VARIANT {
 
 template <bool kQuads>
 VOXELFAIR_NOINLINE bool findNormals(FairingState<kQuads> &s) {
@@ -140,4 +141,5 @@ template bool findNormals(FairingState<false> &);
 template void findFairedNormals(FairingState<true> &);
 template void findFairedNormals(FairingState<false> &);
 
+}  // namespace VOXELFAIR_SIMD_VARIANT
 }  // namespace voxelfair::constrained

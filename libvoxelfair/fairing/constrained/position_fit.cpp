@@ -30,6 +30,7 @@
 #include <glm/geometric.hpp>
 
 namespace voxelfair::constrained {
+inline namespace VOXELFAIR_SIMD_VARIANT {
 
 template <bool kQuads>
 VOXELFAIR_NOINLINE void fitFreeVertices(FairingState<kQuads> &s) {
@@ -194,4 +195,5 @@ template void sweep(FairingState<false> &, bool);
 template void finish(FairingState<true> &);
 template void finish(FairingState<false> &);
 
+}  // namespace VOXELFAIR_SIMD_VARIANT
 }  // namespace voxelfair::constrained

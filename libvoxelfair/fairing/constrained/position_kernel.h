@@ -24,6 +24,7 @@
 #include <glm/vec3.hpp>
 
 namespace voxelfair::constrained {
+inline namespace VOXELFAIR_SIMD_VARIANT {
 
 // Neighbours of a regular free vertex as the sweeps read them (voxel surfaces have 3 to 6).
 constexpr uint32_t kRegularValence = 6;
@@ -104,4 +105,5 @@ inline void moveFreeBlock(const FitBlock &f, const uint32_t *neighbours, Offset 
 }
 #endif
 
+}  // namespace VOXELFAIR_SIMD_VARIANT
 }  // namespace voxelfair::constrained

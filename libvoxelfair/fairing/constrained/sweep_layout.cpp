@@ -21,6 +21,7 @@
 #include <algorithm>
 
 namespace voxelfair::constrained {
+inline namespace VOXELFAIR_SIMD_VARIANT {
 
 template <bool kQuads>
 VOXELFAIR_NOINLINE void buildSlots(FairingState<kQuads> &s) {
@@ -113,4 +114,5 @@ VOXELFAIR_NOINLINE void buildSlots(FairingState<kQuads> &s) {
 template void buildSlots(FairingState<true> &);
 template void buildSlots(FairingState<false> &);
 
+}  // namespace VOXELFAIR_SIMD_VARIANT
 }  // namespace voxelfair::constrained

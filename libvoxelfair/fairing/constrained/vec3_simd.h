@@ -1,5 +1,5 @@
 // Vector primitives of the constrained fairing, in SSE2 where the target has it and in plain GLM
-// otherwise.
+// otherwise (fairing/simd_variant.h chooses).
 //
 // Contract: every SSE2 function gives bit for bit the result of the GLM expression it stands for
 // (same operations in the same order: dot = (x x + y y) + z z, cross as glm::cross, normalize as
@@ -15,9 +15,10 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-#if defined(__SSE2__) || defined(_M_X64) || defined(_M_AMD64)
+#include "fairing/simd_variant.h"
+
+#ifdef VOXELFAIR_SSE2
 #include <emmintrin.h>
-#define VOXELFAIR_SSE2 1
 #endif
 
 #if defined(__GNUC__)
@@ -29,6 +30,7 @@
 #endif
 
 namespace voxelfair::constrained {
+inline namespace VOXELFAIR_SIMD_VARIANT {
 
 [[maybe_unused]] inline bool isFinite(const glm::vec3 &p) {
     return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
@@ -93,4 +95,5 @@ inline void normalizeAll(glm::vec3 *vectors, size_t count, size_t stride = sizeo
         *at(i) = normalizedOrZero(*at(i));
 }
 
+}  // namespace VOXELFAIR_SIMD_VARIANT
 }  // namespace voxelfair::constrained
