@@ -42,11 +42,17 @@ void run(constrained::FairingState<kQuads> &s) {
         // smaller errors on spheres, tori and cylinders than with all levels again).
         const int levels = s.options.normalLevels;
         filterNormals(s, pass == 0 ? levels : std::max(levels - 1, std::min(levels, 1)));
+        if (pass == std::min(1, s.options.passes - 1) && s.options.fitPlanes)
+            findPlaneRegions(s);
+        lendAnchorNormals(s);
         fitFreeVertices(s);
+        holdAnchors(s);
         for (int i = 0; i < s.options.positionSweeps; ++i)
             sweep(s, i % 2 == 0);
         ++s.report.passes;
     }
+    if (s.options.passes > 0 && s.options.driftRounds > 0)
+        removeDrift(s, s.options.driftRounds);
     finish(s);
 }
 
@@ -64,12 +70,13 @@ ConstrainedFairingReport fairConstrained(glm::vec3 *positions, size_t vertexCoun
         return report;
     };
     if (options.passes < 0 || options.normalLevels < 0 || options.normalLevels > 8 || options.positionSweeps < 0 ||
-        options.stepReach < 1 || options.featureReach < 0 || !(options.cellHalfWidth > 0.0f) ||
+        options.stepReach < 1 || options.featureReach < 0 || options.driftRounds < 0 ||
+        !(options.cellHalfWidth > 0.0f) ||
         !std::isfinite(options.cellHalfWidth) ||
         !(options.creaseAngleDegrees > 0.0f && options.creaseAngleDegrees < 180.0f) ||
         !std::isfinite(options.voxelSize) || options.voxelSize < 0.0f)
         return finish(FairingStatus::InvalidOptions,
-                      "passes, positionSweeps >= 0, normalLevels in [0, 8], stepReach >= 1, featureReach >= 0, "
+                      "passes, positionSweeps, driftRounds >= 0, normalLevels in [0, 8], stepReach >= 1, featureReach >= 0, "
                       "cellHalfWidth > 0, creaseAngle in (0, 180), voxelSize finite and >= 0");
     if (const auto [status, message] = checkFairingInput(positions, vertexCount, polygonOffsets, polygonIndices,
                                                          polygonCount, options.passes);

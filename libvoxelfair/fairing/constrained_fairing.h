@@ -27,17 +27,33 @@
 //    voxel centres around each lattice vertex (Gibson, "Constrained elastic surface nets",
 //    MICCAI 1998). This bounds every move, keeps 1-voxel plates and rods from collapsing, and
 //    keeps the volume.
+// 5. Drift. The fit only asks edges to be perpendicular to normals: a face can slide along its
+//    normal and a part can grow, and near edges and fillets, whose filtered normals turn over
+//    more quads than the true surface does, the cells push the rounded profile out, which drags
+//    the flat faces with it (a rounded box became a pillow, +3.8% volume). So the displacement
+//    along the normal is averaged over each vertex's neighbourhood (driftRounds Jacobi rounds)
+//    and that local mean is taken off: the surface keeps the voxels' volume locally, as the
+//    voxelization of a plane or a smooth surface does on average.
+// Optional (fitPlanes, off by default): flat faces at any orientation found as digital plane
+// regions, their vertices held on fitted planes, edge lines and corners (constrained/
+// plane_regions.cpp). It brings turned boxes, plates and wedges about 0.01 RMS nearer, but costs
+// 3-4 times the whole call on large curved surfaces and takes patches of spheres of radius 40 and
+// up for planes.
 // A second pass recomputes the polygon normals from the faired surface and repeats 2 and 3; the
-// edge classes and the cells always come from the input.
+// edge classes and the cells always come from the input. The stages are in fairing/constrained/
+// (fairing_state.h lists them).
 //
-// Measured with the defaults (tests/fairing/constrained_fidelity_test.cpp, tools/compare_smoothing;
-// 15 spheres of radius 6-24, 3 tori, 12 capped cylinders of radius 3-6, 4 boxes): RMS distance
-// to the true surface at most 0.058 voxel on spheres, 0.068 on tori, 0.136 on cylinders, exactly
-// 0 on boxes; volume within 0.8% for spheres of radius >= 12 and tori. Cost on a 100k-vertex
-// voxel sphere (benchmarks/fairing_benchmark, one thread): 13.5-15 ms a call, 5.0-5.4 times less
-// than vcglib's Taubin (10 steps) run in the same loop; the first call in a process also maps its
-// ~19 MB of work memory (about 20 ms). passes = 1 takes about 10 ms (7 times less) for worst RMS
-// 0.060 on spheres, 0.077 on tori, 0.146 on cylinders.
+// Measured with the defaults on the shape families of tests/shapes/shape_families.h (random
+// orientations and sub-voxel offsets, 4 each; tests/fairing/family_fidelity_test.cpp), worst RMS
+// distance to the true surface in voxels: spheres, ellipsoids, tori, capsules 0.072; cylinders
+// and cones at any angle 0.15; boxes on the lattice 0 (exact); rounded boxes at any orientation
+// 0.073; a hull with a barrel 0.11; boxes turned about one or two axes, plates, wedges, chamfered
+// plates 0.14-0.17; rounded boxes on the lattice 0.14. Volume within 1% except where the voxels
+// themselves are further off, and on rounded boxes on the lattice (3.7%). On the older fixed set
+// (tests/fairing/constrained_fidelity_test.cpp) at most 0.091 on spheres and tori, 0.16 on
+// cylinders along the axes, exact on boxes. Cost on a 100k-vertex voxel sphere
+// (benchmarks/fairing_benchmark, one thread): about 15-17 ms a call, 4.2-4.5 times less than
+// vcglib's Taubin (10 steps) in the same loop on a busy machine.
 #pragma once
 
 #include "fairing/lanczos_fairing.h"  // FairingStatus
@@ -59,7 +75,12 @@ struct ConstrainedFairingOptions {
     // one level less.
     int normalLevels = 3;
     // Position fitting sweeps per pass (step 3).
-    int positionSweeps = 8;
+    int positionSweeps = 6;
+    // Find flat faces at any orientation and hold their vertices on fitted planes, edges and
+    // corners (constrained/plane_regions.cpp). Off: slow on large curved surfaces (see above).
+    bool fitPlanes = false;
+    // Neighbourhood rounds of the drift removal (step 5); 0 turns it off.
+    int driftRounds = 8;
     // Half-width, in voxels, of the box around its input position that each vertex stays in.
     // 0.5 is the constraint of surface nets; it must be > 0.
     float cellHalfWidth = 0.5f;
@@ -84,6 +105,8 @@ struct ConstrainedFairingReport {
     size_t sharpEdges = 0;          // edges kept sharp: genuine creases, boundary, non-manifold
     size_t edgeLineVertices = 0;    // vertices on a line of sharp edges (fitted to their planes)
     size_t pinnedVertices = 0;      // vertices where sharp edges end or meet, or not selected: never moved
+    size_t planeRegions = 0;        // flat faces found (fitPlanes)
+    size_t planeVertices = 0;       // vertices held on their planes, edge lines or corners
     size_t skippedVertices = 0;     // vertices with non-finite coordinates: never moved, never neighbours
     size_t movedVertices = 0;       // vertices that ended more than 1e-6 voxel from their input
     size_t clampedVertices = 0;     // vertices that ended on the wall of their cell

@@ -100,7 +100,8 @@ TEST(FairingConstrained, OneVoxelPlateAndRodKeepTheirThickness) {
     ASSERT_EQ(fair(faired).status, FairingStatus::Ok);
     EXPECT_GT(maxMove(plate, faired), 0.1f);  // the outline is smoothed
     for (size_t v = 0; v < plate.positions.size(); ++v)
-        EXPECT_NEAR(faired.positions[v].z, plate.positions[v].z, 1e-4f) << v;  // both faces stay flat
+        // Both faces stay flat (to 0.001 voxel: the drift removal, step 5, leans on the rim).
+        EXPECT_NEAR(faired.positions[v].z, plate.positions[v].z, 1e-3f) << v;
     expectInCells(plate, faired, 0.5f);
 
     const QuadMesh rod = voxelSurface(1, 1, 9, [](int, int, int) { return true; });

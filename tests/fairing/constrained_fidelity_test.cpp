@@ -1,9 +1,12 @@
 // The second fairing mode's goal (constrained_fairing.h), measured on voxelized analytic shapes
 // of several sizes and sub-voxel offsets (comparison::fidelityShapes): with its defaults, RMS
-// distance to the true surface at most 0.07 voxel on spheres (radius 6-24) and tori, 0.14 on
-// capped cylinders (radius 3-6), 0.03 on axis-aligned boxes (which in fact stay exact), volume
-// within 1% for spheres of radius 12 and up and for the tori, and below the paper's pass and
-// MeshLab's Taubin Smooth on every rounded shape.
+// distance to the true surface at most 0.095 voxel on spheres (radius 6-24) and tori, 0.17 on
+// capped cylinders along the axes (radius 3-6), 0.03 on axis-aligned boxes (which in fact stay
+// exact), volume within 1% for spheres of radius 12 and up and for the tori, and below the paper's
+// pass and MeshLab's Taubin Smooth on every rounded shape. The bounds were 0.07 and 0.14 before
+// the drift removal (constrained_fairing.h, step 5): it keeps flat faces and fillets from
+// inflating (tests/fairing/family_fidelity_test.cpp) and costs these shapes up to 0.02 (worst:
+// a torus of tube radius 4 around the x axis, 0.091; spheres centred on a voxel centre, 0.080).
 #include "fairing/smoothing_comparison.h"
 
 #include <gtest/gtest.h>
@@ -62,7 +65,7 @@ TEST_P(FairingConstrainedFidelity, MeetsTheGoalAndBeatsTheOtherSmoothers) {
         EXPECT_LT(e.max, 1e-4);
         return;
     }
-    const double goal = param.family == "cylinder" ? 0.14 : 0.07;
+    const double goal = param.family == "cylinder" ? 0.17 : 0.095;
     EXPECT_LE(e.rms, goal);
     if ((param.family == "sphere" && param.size >= 12.0) || param.family == "torus") {
         EXPECT_LE(std::fabs(e.volumeChangePercent), 1.0);

@@ -93,6 +93,10 @@ std::vector<std::pair<std::string, ConstrainedFairingOptions>> optionSets() {
     o.keepSharpEdges = false;
     o.normalLevels = 1;
     sets.push_back({"no sharp edges, 1 level", o});
+    o = {};
+    o.fitPlanes = true;
+    o.driftRounds = 0;
+    sets.push_back({"planes, no drift removal", o});
     return sets;
 }
 

@@ -8,9 +8,11 @@
 //   edge_classes.cpp     classifyEdges, findVertexKinds  step 1: staircase or genuine edge; free,
 //                                                        edge-line or pinned vertex
 //   normal_filter.cpp    buildLevels, filterNormals      step 2: a-trous averaging of polygon normals
+//   plane_regions.cpp    findPlaneRegions                flat faces at any orientation: vertices
+//                                                        held on fitted planes, their lines, corners
 //   sweep_layout.cpp     buildSlots                      step 3's memory layout (waves of four)
 //   position_fit.cpp     fitFreeVertices, sweep, finish  steps 3 and 4: positions fitted to the
-//                                                        normals inside each vertex's cell
+//                        lendAnchorNormals, holdAnchors  normals inside each vertex's cell
 //   position_kernel.h    moveFreeBlock                   step 3's update, four vertices in SSE
 //
 // Every stage takes the state and documents which arrays it reads and which it fills. Member
@@ -158,6 +160,10 @@ struct FairingState {
     Offset *offset = nullptr;
     FitBlock *fit = nullptr;               // per block of four free slots
     uint8_t *regularBlock = nullptr;       // per block: all its vertices Free (moveFreeBlock)
+
+    // plane_regions.cpp: free vertices held at a fixed offset, lending a normal to their neighbours.
+    std::vector<uint32_t> anchored;
+    std::vector<glm::vec3> anchoredOffset, anchoredNormal;
 };
 
 // The stages (explicitly instantiated for both kQuads in their files).
@@ -172,7 +178,11 @@ void classifyEdges(const Polygons<kQuads> &k, const uint32_t *twin, const glm::v
 template <bool kQuads> void findVertexKinds(FairingState<kQuads> &s);
 template <bool kQuads> void buildLevels(FairingState<kQuads> &s);
 template <bool kQuads> void filterNormals(FairingState<kQuads> &s, int levels);
+template <bool kQuads> void findPlaneRegions(FairingState<kQuads> &s);
 template <bool kQuads> void buildSlots(FairingState<kQuads> &s);
+template <bool kQuads> void lendAnchorNormals(FairingState<kQuads> &s);
+template <bool kQuads> void holdAnchors(FairingState<kQuads> &s);
+template <bool kQuads> void removeDrift(FairingState<kQuads> &s, int rounds);
 template <bool kQuads> void fitFreeVertices(FairingState<kQuads> &s);
 template <bool kQuads> void sweep(FairingState<kQuads> &s, bool forward);
 template <bool kQuads> void finish(FairingState<kQuads> &s);

@@ -188,6 +188,69 @@ VOXELFAIR_NOINLINE void finish(FairingState<kQuads> &s) {
     s.report.maxDisplacement = std::sqrt(maxMove2);
 }
 
+template <bool kQuads>
+VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds) {
+    const size_t V = s.V;
+    const uint32_t *const start = s.vertexStart, *const next = s.vertexNext, *const rank = s.rank;
+    const VertexKind *const kind = s.kind;
+    const VertexNormal *const normal = s.vertexNormal;
+    Offset *const offset = s.offset;
+    // n . d per vertex (0 for those that do not move), averaged with the neighbours' `rounds`
+    // times (Jacobi).
+    float *along = s.scratch.template take<float>(V), *smooth = s.scratch.template take<float>(V);
+    float *const weight = s.scratch.template take<float>(V);
+    for (size_t v = 0; v < V; ++v) {
+        along[v] = isFree(kind[v]) ? glm::dot(normal[v].n, offset[rank[v]].d) : 0.0f;
+        weight[v] = 1.0f / float(1 + start[v + 1] - start[v]);
+    }
+    for (int round = 0; round < rounds; ++round) {
+        for (size_t v = 0; v < V; ++v) {
+            float sum = along[v];
+            for (uint32_t j = start[v]; j < start[v + 1]; ++j)
+                sum += along[next[j]];
+            smooth[v] = sum * weight[v];
+        }
+        std::swap(along, smooth);
+    }
+    std::vector<uint8_t> held(s.anchored.empty() ? 0 : V, 0);
+    for (uint32_t v : s.anchored)
+        held[v] = 1;
+    const float half = s.half;
+    for (size_t v = 0; v < V; ++v)
+        if (isFree(kind[v]) && (held.empty() || !held[v])) {
+            Offset &o = offset[rank[v]];
+            o.d = glm::clamp(o.d - along[v] * normal[v].n, -half, half);
+        }
+}
+
+template <bool kQuads>
+void lendAnchorNormals(FairingState<kQuads> &s) {
+    for (size_t i = 0; i < s.anchored.size(); ++i)
+        s.vertexNormal[s.anchored[i]].n = s.anchoredNormal[i];
+}
+
+template <bool kQuads>
+void holdAnchors(FairingState<kQuads> &s) {
+    for (size_t i = 0; i < s.anchored.size(); ++i) {
+        const uint32_t slot = s.rank[s.anchored[i]];
+        FitBlock &f = s.fit[slot / 4];
+        const int lane = int(slot % 4);
+        const glm::vec3 n = s.anchoredNormal[i];
+        f.stepScale[lane] = f.base[lane] = f.sx[lane] = f.sy[lane] = f.sz[lane] = 0.0f;
+        f.nx[lane] = n.x;
+        f.ny[lane] = n.y;
+        f.nz[lane] = n.z;
+        s.offset[slot].d = s.anchoredOffset[i];
+        s.offset[slot].alongNormal = glm::dot(n, s.anchoredOffset[i]);
+    }
+}
+
+template void removeDrift(FairingState<true> &, int);
+template void removeDrift(FairingState<false> &, int);
+template void lendAnchorNormals(FairingState<true> &);
+template void lendAnchorNormals(FairingState<false> &);
+template void holdAnchors(FairingState<true> &);
+template void holdAnchors(FairingState<false> &);
 template void fitFreeVertices(FairingState<true> &);
 template void fitFreeVertices(FairingState<false> &);
 template void sweep(FairingState<true> &, bool);

@@ -1,0 +1,209 @@
+// The constrained mode (constrained_fairing.h) with its defaults on every shape family of
+// tests/shapes/shape_families.h: kInstances instances each at random orientations, sizes and
+// sub-voxel offsets (fixed seeds), beside one pass of the paper's fairing and, when built with VTK,
+// VTK's discrete marching cubes + windowed sinc (tests/fairing/vtk_windowed_sinc.h). Each family's
+// table is printed, and its goal class is asserted on every instance:
+//
+//   class          issue 15's goal (RMS, voxels)   asserted here          met?
+//   Curved         0.07                            0.075                  not quite: worst 0.072 (a capsule)
+//   Cylinder       0.08                            0.16                   no: worst 0.15
+//   LatticeBox     0.03                            0.03                   yes (exact: 0)
+//   FlatAndEdges   0.10                            per family, below      rounded boxes and hulls only
+//
+// Where a goal is not met the bound is the measured worst with a margin, so the test still
+// catches a regression; the README and the issue's closing note carry the gap. Volume: within 1%
+// of the true solid, or within 1% of what the voxels themselves hold where they are further off
+// (thin cylinders: their voxels alone miss 8%). The family's mean RMS must be below the paper's
+// pass and below VTK's, except on the families listed in kBehindPaper and kBehindVtk, where the
+// goal "ahead of both on every shape" is not met (measured; the test fails if they pass the other
+// way round too, so the lists stay true).
+#include "fairing/smoothing_comparison.h"
+#include "fairing/vtk_windowed_sinc.h"
+#include "shapes/shape_families.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <ostream>
+#include <string>
+#include <vector>
+
+using namespace voxelfair;
+
+namespace {
+
+constexpr int kInstances = 4;
+
+// The bound asserted on every instance of a family (see the table above).
+double rmsBound(const shapes::Family &family) {
+    switch (family.goal) {
+    case shapes::FamilyGoal::Curved:
+        return 0.075;
+    case shapes::FamilyGoal::Cylinder:
+        return 0.16;
+    case shapes::FamilyGoal::LatticeBox:
+        return 0.03;
+    case shapes::FamilyGoal::FlatAndEdges:
+        break;
+    }
+    // Measured worst of the first kInstances, plus about 10%; the goal is 0.10.
+    static const std::map<std::string, double> measured = {
+        {"rounded box", 0.10},  // goal met
+        {"barrel on hull", 0.125},
+        {"rounded box on the lattice", 0.15},
+        {"box turned about one axis", 0.16},
+        {"box turned about two axes", 0.19},
+        {"plate", 0.16},
+        {"wedge", 0.16},
+        {"chamfered plate", 0.16},
+    };
+    const auto it = measured.find(family.name);
+    return it != measured.end() ? it->second : 0.10;
+}
+
+// Families whose mean RMS is not below the paper's pass / VTK's (issue 15's goal not met there).
+const std::vector<std::string> kBehindPaper = {"rounded box on the lattice", "chamfered plate"};
+const std::vector<std::string> kBehindVtk = {"cone", "box turned about two axes", "rounded box on the lattice", "wedge",
+                                             "chamfered plate"};
+bool listed(const std::vector<std::string> &list, const std::string &name) {
+    return std::find(list.begin(), list.end(), name) != list.end();
+}
+
+struct Measured {
+    shapes::SurfaceError raw, paper, ours, vtk;
+    bool haveVtk = false;
+};
+
+Measured measure(const shapes::Shape &shape) {
+    const VoxelVolume volume = shapes::voxelize(shape);
+    const BoundarySurface surface = extractBoundarySurface(volume);
+    const size_t quadCount = surface.quadCount();
+    std::vector<uint32_t> offsets(quadCount + 1);
+    for (size_t q = 0; q <= quadCount; ++q)
+        offsets[q] = uint32_t(4 * q);
+    std::vector<uint32_t> triangles(3 * countFanTriangles(offsets.data(), quadCount));
+    triangulatePolygons(surface.positions.size(), offsets.data(), surface.quads.data(), quadCount, triangles.data(),
+                        nullptr);
+    const size_t samples = 20000;
+    Measured m;
+    m.raw = shapes::measureSurfaceError(surface.positions, triangles, shape, samples);
+    std::vector<glm::vec3> positions = surface.positions;
+    fairModifiedLanczos(positions.data(), positions.size(), offsets.data(), surface.quads.data(), quadCount, nullptr);
+    m.paper = shapes::measureSurfaceError(positions, triangles, shape, samples);
+    positions = surface.positions;
+    fairConstrained(positions.data(), positions.size(), offsets.data(), surface.quads.data(), quadCount, nullptr);
+    m.ours = shapes::measureSurfaceError(positions, triangles, shape, samples);
+#ifdef VOXELFAIR_HAVE_VTK
+    const vtksinc::TriangleMesh vtk = vtksinc::smoothLikeVtk(volume);
+    m.vtk = shapes::measureSurfaceError(vtk.positions, vtk.triangles, shape, samples);
+    m.haveVtk = true;
+#endif
+    return m;
+}
+
+class FairingFamilies : public ::testing::TestWithParam<shapes::Family> {};
+
+}  // namespace
+
+namespace voxelfair::shapes {
+void PrintTo(const Family &family, std::ostream *os) { *os << family.name; }
+}  // namespace voxelfair::shapes
+
+TEST_P(FairingFamilies, HoldsTheGoalClassOnEveryInstance) {
+    const shapes::Family &family = GetParam();
+    std::vector<shapes::FamilyShape> shapes;
+    for (const shapes::FamilyShape &s : shapes::familyShapes(kInstances))
+        if (s.family == family.name)
+            shapes.push_back(s);
+    ASSERT_EQ(shapes.size(), size_t(kInstances));
+    const double bound = rmsBound(family);
+    double oursSum = 0.0, paperSum = 0.0, vtkSum = 0.0;
+    bool haveVtk = false;
+    for (const shapes::FamilyShape &s : shapes) {
+        const Measured m = measure(s.shape);
+        haveVtk = m.haveVtk;
+        std::printf("%-32s raw %.3f  paper %.3f (%+.2f%%)  vtk %s  ours %.3f (%+.2f%%)\n", s.shape.name.c_str(),
+                    m.raw.rms, m.paper.rms, m.paper.volumeChangePercent,
+                    m.haveVtk ? (std::to_string(m.vtk.rms).substr(0, 5) + " (" +
+                                 std::to_string(m.vtk.volumeChangePercent).substr(0, 5) + "%)")
+                                    .c_str()
+                              : "-",
+                    m.ours.rms, m.ours.volumeChangePercent);
+        ASSERT_TRUE(std::isfinite(m.ours.rms)) << s.shape.name;
+        EXPECT_LE(m.ours.rms, bound) << s.shape.name;
+        const double voxelsOff = std::fabs(m.raw.volumeChangePercent);
+        EXPECT_LE(std::fabs(m.ours.volumeChangePercent), std::max(1.0, voxelsOff + 1.0)) << s.shape.name;
+        oursSum += m.ours.rms;
+        paperSum += m.paper.rms;
+        vtkSum += m.vtk.rms;
+    }
+    if (family.goal == shapes::FamilyGoal::LatticeBox)
+        return;  // the paper and VTK move exact faces; ours keeps them (asserted above)
+    std::printf("%s: mean RMS ours %.3f, paper %.3f, vtk %.3f\n", family.name.c_str(), oursSum / kInstances,
+                paperSum / kInstances, haveVtk ? vtkSum / kInstances : 0.0);
+    EXPECT_EQ(oursSum < paperSum, !listed(kBehindPaper, family.name)) << "mean RMS against the paper's pass";
+    if (haveVtk) {
+        EXPECT_EQ(oursSum < vtkSum, !listed(kBehindVtk, family.name)) << "mean RMS against VTK's windowed sinc";
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Families, FairingFamilies, ::testing::ValuesIn(shapes::shapeFamilies()),
+                         [](const ::testing::TestParamInfo<shapes::Family> &info) {
+                             std::string name;
+                             for (char c : info.param.name)
+                                 if (std::isalnum(static_cast<unsigned char>(c)))
+                                     name += c;
+                             return name;
+                         });
+
+// The optional plane stage (fitPlanes, constrained/plane_regions.cpp): finds the faces of turned
+// boxes and holds their vertices, and finds no plane on spheres up to radius 20. On larger spheres
+// a patch is a digital plane too and its curvature does not always give it away (radius 40: 5
+// patches taken for planes; 72: 25): there the test bounds the harm instead.
+TEST(FairingFamilies, PlaneStageFindsFlatFacesAndNoneOnSpheres) {
+    ConstrainedFairingOptions planes;
+    planes.fitPlanes = true;
+    auto run = [](const shapes::Shape &shape, const ConstrainedFairingOptions &options) {
+        const BoundarySurface surface = extractBoundarySurface(shapes::voxelize(shape));
+        std::vector<uint32_t> offsets(surface.quadCount() + 1);
+        for (size_t q = 0; q < offsets.size(); ++q)
+            offsets[q] = uint32_t(4 * q);
+        std::vector<glm::vec3> positions = surface.positions;
+        return fairConstrained(positions.data(), positions.size(), offsets.data(), surface.quads.data(),
+                               surface.quadCount(), nullptr, options);
+    };
+    size_t boxPlanes = 0;
+    for (const shapes::FamilyShape &s : shapes::familyShapes(kInstances))
+        if (s.family == "box turned about one axis" || s.family == "box turned about two axes") {
+            const ConstrainedFairingReport r = run(s.shape, planes);
+            EXPECT_GT(r.planeVertices, 0u) << s.shape.name;
+            boxPlanes += r.planeRegions;
+        }
+    EXPECT_GE(boxPlanes, size_t(2 * kInstances * 2));  // at least two faces a box on average
+    for (double r : {6.3, 17.7}) {
+        const ConstrainedFairingReport report = run(shapes::sphere(glm::dvec3(r + 2.31, r + 2.17, r + 2.43), r), planes);
+        EXPECT_EQ(report.planeRegions, 0u) << "sphere r" << r;
+    }
+    const shapes::Shape large = shapes::sphere(glm::dvec3(42.51, 42.37, 42.63), 40.2);
+    double rms[2];
+    for (int withPlanes = 0; withPlanes < 2; ++withPlanes) {
+        const BoundarySurface surface = extractBoundarySurface(shapes::voxelize(large));
+        std::vector<uint32_t> offsets(surface.quadCount() + 1);
+        for (size_t q = 0; q < offsets.size(); ++q)
+            offsets[q] = uint32_t(4 * q);
+        std::vector<uint32_t> triangles(3 * countFanTriangles(offsets.data(), surface.quadCount()));
+        triangulatePolygons(surface.positions.size(), offsets.data(), surface.quads.data(), surface.quadCount(),
+                            triangles.data(), nullptr);
+        std::vector<glm::vec3> positions = surface.positions;
+        ConstrainedFairingOptions options;
+        options.fitPlanes = withPlanes != 0;
+        fairConstrained(positions.data(), positions.size(), offsets.data(), surface.quads.data(), surface.quadCount(),
+                        nullptr, options);
+        rms[withPlanes] = shapes::measureSurfaceError(positions, triangles, large, 20000).rms;
+    }
+    EXPECT_LE(rms[1], rms[0] + 0.005) << "planes on a sphere of radius 40";
+}
