@@ -10,9 +10,11 @@ meshlabserver with voxelfair's plugins:
                   and baked PNG (4.5), MeshLab's quadric decimation with texture (4.6); writes
                   NAME.ply and NAME.obj (+ NAME.obj.mtl) with NAME_texture.png beside them
   --mode import   the voxel surface only: NAME.ply with face colours and each face's section
-  --mode compare  the same input through voxelfair's fairing (paper and constrained modes) and
-                  through MeshLab's Taubin Smooth: NAME_raw.ply, NAME_voxelfair.ply,
-                  NAME_constrained.ply, NAME_taubin.ply and the seconds of each
+  --mode compare  the same input through voxelfair's fairing (paper and constrained modes), through
+                  MeshLab's Taubin, HC Laplacian and TwoStep Smooth, and (when the build has
+                  it) VTK's windowed sinc: NAME_raw.ply, NAME_voxelfair.ply, NAME_constrained.ply,
+                  NAME_taubin.ply, NAME_hc_laplacian.ply, NAME_twostep.ply, NAME_vtk.ply and the
+                  seconds of each
 
 Files run in parallel on the available cores. meshlabserver exits 0 even when it could not save
 and never prints an importer's error: this wrapper checks that every output really was written,
@@ -147,7 +149,8 @@ def convert(model, args, run):
     if args.mode == "compare":
         outputs = []
         for label, script in (("raw", None), ("voxelfair", "compare_voxelfair.mlx"),
-                              ("constrained", "compare_constrained.mlx"), ("taubin", "compare_taubin.mlx")):
+                              ("constrained", "compare_constrained.mlx"), ("taubin", "compare_taubin.mlx"),
+                              ("hc_laplacian", "compare_hc_laplacian.mlx"), ("twostep", "compare_twostep.mlx")):
             ply = out / f"{name}_{label}.ply"
             arguments = ["-i", str(model), "-o", str(ply), "-m", "fc", "vn"]
             if script:
@@ -156,6 +159,16 @@ def convert(model, args, run):
             check([ply], code, output)
             outputs.append(ply)
             details.append(f"{label} {seconds:.2f} s")
+        vtk_tool = Path(args.build or HERE.parent / "build") / "tools" / "voxelfair_vtk_smooth"
+        if vtk_tool.is_file():  # VTK's discrete marching cubes + windowed sinc (tools/vtk_smooth.cpp)
+            ply, begun = out / f"{name}_vtk.ply", time.monotonic()
+            command = [str(vtk_tool), str(model), str(ply)] + (["--palettes", str(Path(args.palette).parent)]
+                                                                if args.palette else [])
+            result = subprocess.run(command, capture_output=True, text=True, timeout=args.timeout)
+            if result.returncode != 0 or not ply.is_file():
+                raise RuntimeError(f"VTK: {(result.stderr or result.stdout).strip() or 'no output'}")
+            outputs.append(ply)
+            details.append(f"vtk {time.monotonic() - begun:.2f} s")
         return outputs, time.monotonic() - started, details
 
     ply, obj = out / f"{name}.ply", out / f"{name}.obj"

@@ -22,6 +22,7 @@
 
 #include "fairing/smoothing_comparison.h"
 #include "fairing/vcg_taubin.h"
+#include "smoother_lineup.h"
 #include "shapes/analytic_shapes.h"
 #include "shapes/surface_error.h"
 
@@ -121,8 +122,9 @@ struct ModelRun {
     size_t boxVoxels = 0, solidVoxels = 0, parts = 0;
     double extractMs = 0;
     double taubinToVcgMs = 0;  // building vcglib's mesh, which MeshLab already holds
-    Variant raw, ours, taubin, constrained;
-    bool hasTaubin = false, hasConstrained = false;
+    Variant raw, ours, taubin, constrained, hc, twoStep;  // hc, twoStep: MeshLab's (smoother_lineup.h)
+    bool hasTaubin = false, hasConstrained = false, hasOtherMeshLab = false, hasVtk = false;
+    lineup::TriangleSurface vtk;
     const shapes::Shape *shape = nullptr;
 };
 
@@ -195,6 +197,21 @@ ModelRun runChain(const pipeline::Model &model, const std::string &kind) {
         run.taubin.mesh.positions[i] = glm::vec3(p[0], p[1], p[2]);
     }
     finishVariant(run.taubin, model, true);
+    // MeshLab's HC Laplacian and TwoStep Smooth, the same way (tests/fairing/vcg_smoothers.h).
+    run.hasOtherMeshLab = true;
+    run.hc.name = "HC Laplacian";
+    run.hc.mesh = run.raw.mesh;
+    run.hc.smoothMs = bestMs(1, [&] { vcgsmooth::hcLaplacian(run.hc.mesh.positions, run.raw.attributes.triangles); });
+    finishVariant(run.hc, model, false);
+    run.twoStep.name = "TwoStep";
+    run.twoStep.mesh = run.raw.mesh;
+    run.twoStep.smoothMs =
+        bestMs(1, [&] { vcgsmooth::twoStep(run.twoStep.mesh.positions, run.raw.attributes.triangles); });
+    finishVariant(run.twoStep, model, false);
+#endif
+#ifdef VOXELFAIR_HAVE_VTK
+    run.hasVtk = true;
+    run.vtk = lineup::vtkSurface(model);
 #endif
     return run;
 }
@@ -250,6 +267,18 @@ Pictures renderPictures(const ModelRun &run, const fs::path &folder, int size) {
     add(renderMesh(meshOf(run.ours), view, options), "ours", "ours (paper, 1 pass)");
     if (run.hasConstrained)
         add(renderMesh(meshOf(run.constrained), view, options), "constrained", "constrained mode");
+    if (run.hasOtherMeshLab) {
+        add(renderMesh(meshOf(run.hc), view, options), "hc", "HC Laplacian");
+        add(renderMesh(meshOf(run.twoStep), view, options), "twostep", "TwoStep");
+    }
+    if (run.hasVtk) {
+        RenderMesh vtk;
+        vtk.positions = run.vtk.displayPositions.data();
+        vtk.vertexCount = run.vtk.displayPositions.size();
+        vtk.triangles = run.vtk.triangles.data();
+        vtk.triangleCount = run.vtk.triangles.size() / 3;
+        add(renderMesh(vtk, view, options), "vtk", "VTK windowed sinc (no colours)");
+    }
     // The product: the faired mesh with its smoothed normals and the baked texture.
     if (run.ours.hasAtlas) {
         RenderMesh textured = meshOf(run.ours);
@@ -393,6 +422,9 @@ int main(int argc, char **argv) {
 #ifndef VOXELFAIR_HAVE_VCGLIB
     md << "Built without vcglib: no Taubin columns.\n\n";
 #endif
+#ifndef VOXELFAIR_HAVE_VTK
+    md << "Built without VTK: no VTK columns.\n\n";
+#endif
     if (!skipped.empty()) {
         md << "Not shown: ";
         for (size_t i = 0; i < skipped.size(); ++i)
@@ -503,7 +535,7 @@ int main(int argc, char **argv) {
     Table change{{"model", "method", "volume %", "mean move", "max move"}, {}, 2};
     for (const ModelRun &r : runs) {
         const double rawVolume = shapes::enclosedVolume(r.raw.mesh.positions, r.raw.attributes.triangles);
-        for (const Variant *v : {&r.ours, &r.constrained, &r.taubin}) {
+        for (const Variant *v : {&r.ours, &r.constrained, &r.taubin, &r.hc, &r.twoStep}) {
             if (v->mesh.positions.size() != r.raw.mesh.positions.size() || v->mesh.positions.empty())
                 continue;
             double sum = 0, maxMove = 0;
@@ -516,8 +548,19 @@ int main(int argc, char **argv) {
             change.rows.push_back({r.name, v->name, format("%+.2f", (volume - rawVolume) / rawVolume * 100.0),
                                    format("%.3f", sum / double(v->mesh.positions.size())), format("%.3f", maxMove)});
         }
+        if (r.hasVtk) {  // its own vertices: no displacement
+            const double volume = shapes::enclosedVolume(r.vtk.positions, r.vtk.triangles);
+            change.rows.push_back({r.name, "VTK windowed sinc", format("%+.2f", (volume - rawVolume) / rawVolume * 100.0),
+                                   "-", "-"});
+        }
     }
     md << change.markdown() << "\n";
+
+    // The shape families at random orientations and offsets.
+    md << "## Shape families (random orientations and sub-voxel offsets)\n\n"
+       << "Worst RMS distance to the true surface over 4 shapes of each family of tests/shapes/shape_families.h "
+          "(20k samples each), worst |volume change| in brackets; best smoothed value in bold.\n\n"
+       << lineup::familyTable(4, 20000) << "\n" << lineup::familyPictures(folder, size / 2);
 
     // Pictures.
     md << "## Pictures\n\nSame camera for every panel of a model (3/4 view from above the front, z up). Geometry "

@@ -49,6 +49,7 @@ TEST_P(FairingConstrainedFidelity, MeetsTheGoalAndBeatsTheOtherSmoothers) {
     const comparison::FamilyShape &param = GetParam();
     comparison::Options options;
     options.samples = 20000;  // RMS to about 0.5% (the tool uses 200000)
+    options.otherMeshLab = false;  // (tools/compare_smoothing has them)
     const std::vector<comparison::Row> rows = comparison::compare(param.shape, options);
     for (const comparison::Row &row : rows)
         std::printf("%-16s %-16s rms %.4f  max %.4f  bias %+.4f  volume %+.2f%%\n", row.shape.c_str(),

@@ -1,13 +1,18 @@
-// Fidelity of the smoothers on voxelized analytic shapes (shared by tools/compare_smoothing and
-// the fidelity tests): voxelize, extract the boundary quads (section 4.2), smooth, and measure the
-// distance of the triangulated result to the true surface (shapes/surface_error.h).
+// Fidelity of the smoothers on voxelized analytic shapes (shared by tools/compare_smoothing,
+// tools/comparison_report and the fidelity tests): voxelize, extract the boundary quads (section
+// 4.2), smooth, and measure the distance of the triangulated result to the true surface
+// (shapes/surface_error.h). The line-up: raw voxels, the paper's pass, MeshLab's Taubin Smooth, HC
+// Laplacian Smooth and TwoStep Smooth as MeshLab runs them (with vcglib), VTK's discrete marching
+// cubes + windowed sinc (with VTK), and the constrained mode.
 #pragma once
 
 #include "attributes/triangulate.h"
 #include "extraction/boundary_surface.h"
 #include "fairing/constrained_fairing.h"
 #include "fairing/lanczos_fairing.h"
+#include "fairing/vcg_smoothers.h"
 #include "fairing/vcg_taubin.h"
+#include "fairing/vtk_windowed_sinc.h"
 #include "shapes/analytic_shapes.h"
 #include "shapes/surface_error.h"
 
@@ -79,15 +84,24 @@ struct Row {
 
 struct Options {
     size_t samples = 200000;
-    bool taubin = true;  // when vcglib is available
+    bool taubin = true;       // when vcglib is available
+    bool otherMeshLab = true; // HC Laplacian and TwoStep, when vcglib is available
+    bool vtk = true;          // when VTK is available
 };
 
 inline constexpr const char kConstrainedMethod[] = "constrained";
 
-// Raw voxel surface, one default pass of the paper's fairing, (with vcglib) MeshLab's Taubin
-// Smooth with its defaults on the same triangulation, and the second mode with its defaults.
+// Method names of the rows (in this order; some only with vcglib or VTK).
+inline constexpr const char kRawMethod[] = "raw voxels", kPaperMethod[] = "paper (1 pass)",
+                            kTaubinMethod[] = "vcg Taubin (10)", kHcMethod[] = "vcg HC Laplacian",
+                            kTwoStepMethod[] = "vcg TwoStep", kVtkMethod[] = "VTK windowed sinc";
+
+// Raw voxel surface, one default pass of the paper's fairing, (with vcglib) MeshLab's Taubin, HC
+// Laplacian and TwoStep Smooth with their defaults on the same triangulation, (with VTK) VTK's
+// windowed sinc on its own marching-cubes surface, and the second mode with its defaults.
 inline std::vector<Row> compare(const shapes::Shape &shape, const Options &options = {}) {
-    const BoundarySurface surface = extractBoundarySurface(shapes::voxelize(shape));
+    const VoxelVolume volume = shapes::voxelize(shape);
+    const BoundarySurface surface = extractBoundarySurface(volume);
     const size_t quadCount = surface.quadCount();
     std::vector<uint32_t> offsets(quadCount + 1);
     for (size_t q = 0; q <= quadCount; ++q)
@@ -100,17 +114,32 @@ inline std::vector<Row> compare(const shapes::Shape &shape, const Options &optio
     auto measure = [&](const char *method, const std::vector<glm::vec3> &positions) {
         rows.push_back({shape.name, method, shapes::measureSurfaceError(positions, triangles, shape, options.samples)});
     };
-    measure("raw voxels", surface.positions);
+    measure(kRawMethod, surface.positions);
 
     std::vector<glm::vec3> faired = surface.positions;
     fairModifiedLanczos(faired.data(), faired.size(), offsets.data(), surface.quads.data(), quadCount, nullptr);
-    measure("paper (1 pass)", faired);
+    measure(kPaperMethod, faired);
 
 #ifdef VOXELFAIR_HAVE_VCGLIB
     if (options.taubin) {
         std::vector<glm::vec3> taubin = surface.positions;
         vcgtaubin::taubinLikeMeshLab(taubin, triangles);
-        measure("vcg Taubin (10)", taubin);
+        measure(kTaubinMethod, taubin);
+    }
+    if (options.otherMeshLab) {
+        std::vector<glm::vec3> hc = surface.positions;
+        vcgsmooth::hcLaplacian(hc, triangles);
+        measure(kHcMethod, hc);
+        std::vector<glm::vec3> twoStep = surface.positions;
+        vcgsmooth::twoStep(twoStep, triangles);
+        measure(kTwoStepMethod, twoStep);
+    }
+#endif
+#ifdef VOXELFAIR_HAVE_VTK
+    if (options.vtk) {
+        const vtksinc::TriangleMesh vtk = vtksinc::smoothLikeVtk(volume);
+        rows.push_back({shape.name, kVtkMethod, shapes::measureSurfaceError(vtk.positions, vtk.triangles, shape,
+                                                                           options.samples)});
     }
 #endif
 

@@ -11,6 +11,7 @@
 
 #ifdef VOXELFAIR_HAVE_VTK
 
+#include "extraction/cavity_fill.h"
 #include "volume/voxel_volume.h"
 
 #include <cstdint>
@@ -45,9 +46,12 @@ struct Settings {
 };
 
 // The voxels as VTK's image (one voxel of empty padding around, voxel centres at x + 0.5 like the
-// volume's own coordinates), through discrete marching cubes, then `settings.iterations` of the
-// windowed sinc filter (0: the marching-cubes surface as it is).
-inline TriangleMesh smoothLikeVtk(const VoxelVolume &volume, const Settings &settings = {}) {
+// volume's own coordinates), enclosed cavities filled first as our extraction does (section 4.2:
+// a hollow VXL hull would otherwise get inner walls), through discrete marching cubes, then
+// `settings.iterations` of the windowed sinc filter (0: the marching-cubes surface as it is).
+inline TriangleMesh smoothLikeVtk(const VoxelVolume &input, const Settings &settings = {}) {
+    size_t filled = 0;
+    const VoxelVolume volume = fillEnclosedCavities(input, &filled, Voxel{1, 0});
     vtkNew<vtkImageData> image;
     image->SetDimensions(volume.sizeX + 2, volume.sizeY + 2, volume.sizeZ + 2);
     image->SetOrigin(-0.5, -0.5, -0.5);
