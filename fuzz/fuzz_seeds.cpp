@@ -1,5 +1,6 @@
 // Writes small, valid seed inputs for each fuzz target with the test fixtures' writers, so that
 // no model file is committed: fuzz_seeds <corpus root> fills <root>/fuzz_vxl, fuzz_hva, ...
+#include "fixtures/tdcz_writer.h"
 #include "fixtures/vox_writer.h"
 #include "fixtures/vxl_fixtures.h"
 #include "formats/hva.h"
@@ -81,6 +82,11 @@ void voxSeeds(const fs::path &root) {
     save(root, "fuzz_vox", "pack_animation.vox",
          VoxWriter().pack(3).model(1, 1, 1, {{0, 0, 0, 1}}).model(2, 1, 1, {{1, 0, 0, 2}}).model(1, 1, 3, {{0, 0, 2, 3}}).bytes());
     save(root, "fuzz_vox", "sponge.vox", VoxWriter().model(9, 9, 9, mengerSponge(2)).bytes());
+    // Teardown's TDCZ: an unfinished zlib stream of the dense volume (teardown.vox seeds it too).
+    Bytes dense(4 * 3 * 5, 0);
+    for (size_t i = 0; i < dense.size(); i += 3) dense[i] = uint8_t(1 + i % 7);
+    save(root, "fuzz_vox", "teardown_tdcz.vox",
+         VoxWriter().size(4, 3, 5).chunk("TDCZ", tdczContent(4, 3, 5, dense)).model(1, 1, 1, {{0, 0, 0, 2}}).bytes());
 }
 
 // fuzz_extraction's format: sides - 1, placement, then voxel bits (repeated to fill the grid).

@@ -93,11 +93,12 @@ struct VoxFile {
     int frameCount = 1;
 };
 
-// Parses a whole .vox file. Unknown chunks (and the children of known ones) are skipped by their
+// Parses a whole .vox file. A model is a SIZE followed by an XYZI, or by Teardown's zlib-compressed
+// TDCZ (formats/vox_tdcz.h). Unknown chunks (and the children of known ones) are skipped by their
 // sizes; MATL, MATT, rOBJ, rCAM, NOTE and IMAP are skipped too (IMAP only reorders the editor's
 // palette view, not the colours). Throws FormatError saying what is wrong and where ("chunk
 // 'nTRN' at byte 1234: ..."): bad magic or version, truncation, a chunk past its parent, a SIZE
-// without XYZI (e.g. Teardown's compressed TDCZ), voxels outside their model, bad rotations or
+// without voxels, voxels outside their model, corrupt or short compressed voxels, bad rotations or
 // translations, missing or cyclic node references, and the limits above. Never reads out of
 // bounds, and allocates in proportion to the bytes present (within those limits).
 VoxFile readVox(const uint8_t *data, size_t size);

@@ -169,7 +169,7 @@ TEST(HostileVox, AbsurdCountsInEveryChunkKind) {
         {node("nSHP", VoxContent().i32(0).i32(0).i32(huge)), "model count 2147483647"},
         {node("nSHP", VoxContent().i32(0).i32(0).i32(1).i32(0).i32(huge)), "model attribute count"},
         {node("LAYR", VoxContent().i32(0).i32(huge)), "layer attribute count"},
-        {node("RGBA", VoxContent().i32(1)), "RGBA palette (256 entries)"},
+        {node("RGBA", VoxContent().i32(1)), "RGBA palette (255 used entries)"},
         {VoxWriter().model(huge, 1, 1, {}).bytes(), "size 2147483647 x 1 x 1"},
         {VoxWriter().model(-1, -1, -1, {}).bytes(), "size -1 x -1 x -1"},
     };

@@ -1,6 +1,7 @@
 // End-to-end tests through the real meshlabserver: our importer is loaded from the staged
 // runtime, imports .vxl files and MeshLab saves them; the saved PLY must equal what the
 // host-free units compute in this process.
+#include "fixtures/tdcz_writer.h"
 #include "meshlab_run.h"
 #include "ply_reader.h"
 
@@ -189,7 +190,7 @@ TEST(MeshlabServer, ListsOurFilters) {
 
 TEST(MeshlabServer, ImportsSharedVoxFilesLikeTheHostFreeReader) {
     if (!fs::is_directory(kVoxModels)) GTEST_SKIP() << "the shared models are absent: " << kVoxModels;
-    for (const char *name : {"robo", "crabby", "8ontop", "test-transform"}) {
+    for (const char *name : {"robo", "crabby", "8ontop", "test-transform", "teardown"}) {
         SCOPED_TRACE(name);
         const std::string vox = kVoxModels + "/" + name + ".vox";
         std::string log;
@@ -201,15 +202,19 @@ TEST(MeshlabServer, ImportsSharedVoxFilesLikeTheHostFreeReader) {
     }
 }
 
-TEST(MeshlabServer, UnsupportedVoxChunksAreNamed) {
-    if (!fs::is_directory(kVoxModels)) GTEST_SKIP() << "the shared models are absent: " << kVoxModels;
+TEST(MeshlabServer, CorruptCompressedVoxelsAreNamed) {
+    // A Teardown TDCZ model whose zlib stream is broken: the error names the file and the problem.
     const std::string dir = makeTempDir();
-    const MeshlabRun run = runMeshlabServer({"-i", kVoxModels + "/teardown.vox", "-o", dir + "/out.ply"});
+    const std::string vox = dir + "/corrupt.vox";
+    fixtures::Bytes content = fixtures::tdczContent(2, 2, 2, fixtures::Bytes(8, 3));
+    content[14] = 0xff;  // the first deflate block: type 3 is reserved
+    const fixtures::Bytes bytes = fixtures::VoxWriter().size(2, 2, 2).chunk("TDCZ", content).bytes();
+    std::ofstream(vox, std::ios::binary).write(reinterpret_cast<const char *>(bytes.data()), bytes.size());
+    const MeshlabRun run = runMeshlabServer({"-i", vox, "-o", dir + "/out.ply"});
     EXPECT_NE(run.exitCode, 0);
     EXPECT_FALSE(fs::exists(dir + "/out.ply"));
-    const std::string file = fs::canonical(kVoxModels + "/teardown.vox").string();
-    EXPECT_NE(run.output.find("io_vxl: " + file + ": "), std::string::npos) << run.output;
-    EXPECT_NE(run.output.find("TDCZ"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("io_vxl: " + fs::canonical(vox).string() + ": "), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("corrupt zlib data"), std::string::npos) << run.output;
     fs::remove_all(dir);
 }
 
