@@ -37,6 +37,17 @@ setup() {
     as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${missing[@]}" \
       libgl1-mesa-dri
   fi
+  # Khronos' glTF validator (npm) for the export tests: Node from Debian when there is none.
+  if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
+    as_root apt-get update -q
+    as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends nodejs npm
+  fi
+  local npm_dir=${VOXELFAIR_NPM_DIR:-$HOME/.cache/voxelfair/npm}
+  if [ ! -f "$npm_dir/node_modules/gltf-validator/package.json" ]; then
+    echo "voxelfair: installing gltf-validator (npm) into $npm_dir"
+    mkdir -p "$npm_dir"
+    npm install --prefix "$npm_dir" --no-audit --no-fund --silent gltf-validator
+  fi
 }
 
 build() {

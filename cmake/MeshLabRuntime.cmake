@@ -7,7 +7,7 @@ set(VOXELFAIR_RUNTIME_DIR "${CMAKE_BINARY_DIR}/runtime")
 set(_stage_script "${CMAKE_CURRENT_LIST_DIR}/stage-runtime.sh")
 add_custom_target(runtime ALL
   COMMAND bash "${_stage_script}" "${VOXELFAIR_RUNTIME_DIR}" "${MESHLAB_LIBRARY_DIR}"
-          "$<TARGET_FILE:io_vxl>" "$<TARGET_FILE:filter_voxelfair>"
-  DEPENDS io_vxl filter_voxelfair "${_stage_script}"
+          "$<TARGET_FILE:io_vxl>" "$<TARGET_FILE:io_gltf>" "$<TARGET_FILE:filter_voxelfair>"
+  DEPENDS io_vxl io_gltf filter_voxelfair "${_stage_script}"
   COMMENT "Staging the private MeshLab runtime in ${VOXELFAIR_RUNTIME_DIR}"
   VERBATIM)

@@ -35,6 +35,12 @@ int envInt(const char *name, int fallback) {
     return ok ? value : fallback;
 }
 
+float envFloat(const char *name, float fallback) {
+    bool ok = false;
+    const float value = env(name).trimmed().toFloat(&ok);
+    return ok ? value : fallback;
+}
+
 int houseColourIndexFromEnv() {
     const QString wanted = env("VOXELFAIR_HOUSE_COLOUR").trimmed();
     for (size_t i = 1; i < kHouseColours.size(); ++i)
@@ -70,6 +76,15 @@ void declareImportParameters(RichParameterList &parameters, const QStringList &s
                                  "Place each section with its .hva matrix (or, without an .hva, its own matrix) and "
                                  "bounds, as the game does. Off: every section in its own voxel space, "
                                  "one unit per voxel, x and y horizontal, z up."));
+
+    parameters.addParam(RichBool("loadUnit", envInt("VOXELFAIR_UNIT", 1) != 0, "Load turret and barrel",
+                                 "Opening NAME.vxl also loads NAMEtur.vxl and NAMEbarl.vxl (each with its .hva) from "
+                                 "the same folder when they exist, as the game draws a vehicle: the whole unit. Not "
+                                 "for a tur/barl file itself, nor when one section is chosen."));
+    parameters.addParam(RichFloat("turretOffset", envFloat("VOXELFAIR_TURRET_OFFSET", 0.0f), "Turret offset (leptons)",
+                                  "The unit's TurretOffset from the game's art rules: turret and barrel move this many "
+                                  "leptons along the unit's forward axis (+x). 256 leptons are one cell; converted to "
+                                  "voxels with the body's section scale (Det, 1/12)."));
 }
 
 void declareVoxImportParameters(RichParameterList &parameters, int frameCount) {
@@ -89,6 +104,8 @@ ImportSettings readImportSettings(const RichParameterList &parameters) {
     if (parameters.hasParameter("frame")) s.frame = parameters.getInt("frame");
     if (parameters.hasParameter("section")) s.section = parameters.getEnum("section") - 1;
     if (parameters.hasParameter("applyTransforms")) s.applyTransforms = parameters.getBool("applyTransforms");
+    if (parameters.hasParameter("loadUnit")) s.loadUnit = parameters.getBool("loadUnit");
+    if (parameters.hasParameter("turretOffset")) s.turretOffsetLeptons = parameters.getFloat("turretOffset");
     return s;
 }
 

@@ -7,6 +7,8 @@
 //   VOXELFAIR_FRAME           animation frame (VXL: of the .hva; VOX: of the scene graph), from 0
 //   VOXELFAIR_SECTION         section number from 0, or -1 for all sections
 //   VOXELFAIR_TRANSFORMS      1 to place sections by their HVA/tailer matrices, 0 to leave them in voxel space
+//   VOXELFAIR_UNIT            0 to import NAME.vxl alone, without NAMEtur.vxl and NAMEbarl.vxl beside it
+//   VOXELFAIR_TURRET_OFFSET   the unit's TurretOffset in leptons (art rules; not in the files), default 0
 #pragma once
 
 #include "formats/palette.h"
@@ -25,6 +27,8 @@ struct ImportSettings {
     int frame = 0;
     int section = -1;  // -1: all
     bool applyTransforms = true;
+    bool loadUnit = true;             // also NAMEtur.vxl and NAMEbarl.vxl (+ .hva) beside NAME.vxl
+    float turretOffsetLeptons = 0.0f;
 };
 
 // Adds the VXL parameters, with defaults from the environment. `sectionNames` fills the section

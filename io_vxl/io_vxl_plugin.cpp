@@ -8,11 +8,14 @@
 #include "formats/hva.h"
 #include "formats/vox.h"
 #include "formats/vxl.h"
+#include "scene/unit_scene.h"
+#include "scene/vox_export_nodes.h"
 #include "scene/vox_scene.h"
 #include "scene/vxl_scene.h"
 
 #include <QDir>
 #include <QFileInfo>
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <memory>
@@ -122,12 +125,41 @@ bool IoVxlPlugin::open(const QString &format, const QString &fileName, MeshModel
     }
 }
 
+namespace {
+
+// NAMEtur.vxl / NAMEbarl.vxl beside the body, whatever their case (3TNK.VXL + 3tnktur.vxl).
+QString findSibling(const QString &bodyPath, const QString &stem, const QString &extension) {
+    const QFileInfo body(bodyPath);
+    for (const QFileInfo &entry : body.absoluteDir().entryInfoList(QDir::Files))
+        if (entry.completeBaseName().compare(stem, Qt::CaseInsensitive) == 0 &&
+            entry.suffix().compare(extension, Qt::CaseInsensitive) == 0)
+            return entry.absoluteFilePath();
+    return QString();
+}
+
+// Reads a .vxl and, when placing by transforms, the .hva beside it; `current` names the file read.
+UnitFile readUnitFile(const QString &path, UnitRole role, bool withHva, QString &current) {
+    UnitFile file;
+    file.role = role;
+    file.name = local(QFileInfo(path).fileName());
+    current = path;
+    const std::vector<uint8_t> bytes = readBytes(path);
+    file.model = readVxl(bytes.data(), bytes.size());
+    const QString hvaPath = companionPath(path, "hva");
+    if (withHva && !hvaPath.isEmpty()) {
+        current = hvaPath;
+        const std::vector<uint8_t> hvaBytes = readBytes(current);
+        file.hva = readHva(hvaBytes.data(), hvaBytes.size());
+    }
+    current = path;
+    return file;
+}
+
+}  // namespace
+
 void IoVxlPlugin::openVxl(const QString &path, const ImportSettings &settings, MeshModel &m, int &mask,
                           vcg::CallBackPos *cb, QString &current) {
     if (cb) cb(0, "Reading VXL");
-    const std::vector<uint8_t> bytes = readBytes(path);
-    const VxlModel model = readVxl(bytes.data(), bytes.size());
-
     VxlSceneOptions options;
     options.section = settings.section;
     options.frame = settings.frame;
@@ -140,32 +172,76 @@ void IoVxlPlugin::openVxl(const QString &path, const ImportSettings &settings, M
         external = readPal(palBytes.data(), palBytes.size());
         options.externalPalette = &external;
     }
-    std::unique_ptr<HvaAnimation> hva;
+    std::vector<UnitFile> files;
+    files.push_back(readUnitFile(path, UnitRole::Body, settings.applyTransforms, current));
+    const VxlModel &model = files[0].model;
+    const bool hasHva = files[0].hva.has_value();
     const QString hvaPath = companionPath(path, "hva");
-    if (settings.applyTransforms && !hvaPath.isEmpty()) {
-        current = hvaPath;
-        const std::vector<uint8_t> hvaBytes = readBytes(current);
-        hva = std::make_unique<HvaAnimation>(readHva(hvaBytes.data(), hvaBytes.size()));
-    }
+
     // A wrong frame or section count is a mismatch of the .hva (when there is one) with the .vxl.
-    current = hva ? hvaPath : path;
-    const VoxelScene scene = vxlScene(model, hva.get(), options);
+    current = hasHva ? hvaPath : path;
+    VoxelScene scene = vxlScene(model, hasHva ? &*files[0].hva : nullptr, options);
     current = path;
 
+    // The whole unit: turret and barrel beside the body. A broken one is left out with a message.
+    const QString stem = QFileInfo(path).completeBaseName();
+    const bool unit = settings.loadUnit && settings.section == -1 && !isUnitCompanionStem(local(stem));
+    QStringList loaded{QFileInfo(path).fileName() + (hasHva ? " (+ .hva)" : "")};
+    if (unit) {
+        for (UnitRole role : {UnitRole::Turret, UnitRole::Barrel}) {
+            const QString companion =
+                findSibling(path, QString::fromStdString(unitCompanionStem(local(stem), role)), "vxl");
+            if (companion.isEmpty()) continue;
+            QString where = companion;
+            try {
+                UnitFile file = readUnitFile(companion, role, settings.applyTransforms, where);
+                VxlSceneOptions o = options;
+                if (file.hva) o.frame = std::min(o.frame, file.hva->frameCount - 1);
+                if (file.hva) where = companionPath(companion, "hva");
+                vxlScene(file.model, file.hva ? &*file.hva : nullptr, o);  // checks the pair
+                loaded << QFileInfo(companion).fileName() + (file.hva ? " (+ .hva)" : "");
+                files.push_back(std::move(file));
+            } catch (const std::exception &e) {
+                report(QString("%1: %2; the %3 is left out, the rest of the unit imports")
+                           .arg(where, QString::fromLocal8Bit(e.what()), unitRoleName(role)));
+            }
+        }
+    }
+    ExportScene nodes;
+    size_t sections = model.sections.size();
+    if (settings.section == -1) {
+        UnitSceneOptions unitOptions;
+        unitOptions.vxl = options;
+        unitOptions.turretOffsetLeptons = settings.turretOffsetLeptons;
+        UnitScene placed = unitScene(files, unitOptions);
+        scene = std::move(placed.scene);
+        nodes = std::move(placed.nodes);
+        sections = 0;
+        for (const UnitFile &file : files) sections += file.model.sections.size();
+    }
+
     const SceneSurface surface = meshScene(path, scene, m, mask, cb);
+    if (!nodes.empty()) storeExportScene(nodes, m.cm);
+    if (files.size() > 1)
+        report(QString("%1: unit of %2 files: %3; turret offset %4 leptons")
+                   .arg(QFileInfo(path).fileName())
+                   .arg(files.size())
+                   .arg(loaded.join(", "))
+                   .arg(double(settings.turretOffsetLeptons)));
     const QString placement = !settings.applyTransforms ? QString("voxel space")
-                              : hva                     ? QString("HVA frame %1").arg(settings.frame)
+                              : hasHva                  ? QString("HVA frame %1").arg(settings.frame)
                                                         : QString("section matrices (no .hva found)");
     report(QString("%1: %2 of %3 sections imported; palette: %4%5; placement: %6")
                .arg(QFileInfo(path).fileName())
                .arg(scene.parts.size())
-               .arg(model.sections.size())
+               .arg(sections)
                .arg(settings.paletteFile.isEmpty() ? QString::fromStdString(chooseVxlPalette(model, options).source)
                                                    : settings.paletteFile)
                .arg(settings.houseColour ? ", house colour remapped" : "")
                .arg(placement));
     size_t clamped = 0;
-    for (const VxlSection &s : model.sections) clamped += s.clampedNormals;
+    for (const UnitFile &file : files)
+        for (const VxlSection &s : file.model.sections) clamped += s.clampedNormals;
     if (clamped > 0) report(QString("%1 voxel normal indices were past the normal table and were clamped").arg(clamped));
 }
 
@@ -176,6 +252,7 @@ void IoVxlPlugin::openVox(const QString &path, const ImportSettings &settings, M
     const VoxFile file = readVox(bytes.data(), bytes.size());
     const VoxelScene scene = voxScene(file, VoxSceneOptions{settings.frame});
     meshScene(path, scene, m, mask, cb);
+    storeExportScene(voxExportNodes(file, settings.frame), m.cm);
     report(QString("%1: MagicaVoxel version %2, %3 models, %4 instances shown at frame %5 of %6; palette: %7")
                .arg(QFileInfo(path).fileName())
                .arg(file.version)

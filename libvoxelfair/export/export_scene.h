@@ -34,10 +34,18 @@ struct ExportNode {
 
 struct ExportScene {
     std::vector<ExportNode> nodes;
+    // The node of each face part (PlacedVolume::part, the per-face part the importer records);
+    // empty: a part's number is its node's index.
+    std::vector<int> partNodes;
     ModelFront front = ModelFront::PlusX;
     float framesPerSecond = 15.0f;  // animation frames (HVA frames, MagicaVoxel `_f`) per second
 
     bool empty() const { return nodes.empty(); }
+    // The node of face part `part`, or -1 when there is none.
+    int nodeOfPart(int part) const {
+        if (partNodes.empty()) return part >= 0 && size_t(part) < nodes.size() ? part : -1;
+        return part >= 0 && size_t(part) < partNodes.size() ? partNodes[size_t(part)] : -1;
+    }
     size_t frameCount() const {
         size_t n = 0;
         for (const ExportNode &node : nodes) n = std::max(n, node.frames.size());

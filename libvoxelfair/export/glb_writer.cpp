@@ -166,6 +166,17 @@ std::vector<NodeMesh> splitByNode(const GlbMesh &mesh, const std::vector<glm::ma
     return nodes;
 }
 
+// Area-weighted mean of the adjacent triangles' normals (the cross product's length is twice the area).
+std::vector<glm::vec3> faceWeightedNormals(const GlbMesh &mesh) {
+    std::vector<glm::vec3> normals(mesh.positions.size(), glm::vec3(0.0f));
+    for (size_t t = 0; t + 2 < mesh.triangles.size(); t += 3) {
+        const uint32_t a = mesh.triangles[t], b = mesh.triangles[t + 1], c = mesh.triangles[t + 2];
+        const glm::vec3 n = glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
+        normals[a] += n, normals[b] += n, normals[c] += n;
+    }
+    return normals;
+}
+
 void checkInput(const GlbMesh &mesh, const ExportScene &scene, size_t nodeCount) {
     check(mesh.triangles.size() % 3 == 0, "the triangle index count is not a multiple of 3");
     const size_t triangles = mesh.triangles.size() / 3;
@@ -216,7 +227,14 @@ std::vector<uint8_t> writeGlb(const GlbMesh &mesh, const ExportScene &inputScene
         normalToLocal.push_back(glm::transpose(glm::inverse(glm::mat3(c * inverseWorld))));
         gltfWorld.push_back(toGltf(node.world));
     }
-    const std::vector<NodeMesh> parts = splitByNode(mesh, modelToLocal, normalToLocal);
+    std::vector<NodeMesh> parts;
+    if (mesh.normals.empty()) {
+        GlbMesh withNormals = mesh;
+        withNormals.normals = faceWeightedNormals(mesh);
+        parts = splitByNode(withNormals, modelToLocal, normalToLocal);
+    } else {
+        parts = splitByNode(mesh, modelToLocal, normalToLocal);
+    }
 
     tinygltf::Model model;
     model.asset.version = "2.0";

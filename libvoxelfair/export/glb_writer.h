@@ -51,7 +51,7 @@ struct GlbOptions {
 // A triangle mesh in model space; the corner arrays hold 3 entries per triangle.
 struct GlbMesh {
     std::vector<glm::vec3> positions;
-    std::vector<glm::vec3> normals;       // per vertex; empty: none written
+    std::vector<glm::vec3> normals;       // per vertex; empty: area-weighted face normals
     std::vector<uint32_t> triangles;      // 3 vertex indices per triangle, counter-clockwise
     std::vector<glm::vec2> cornerUvs;     // empty: no TEXCOORD_0; (0,0) is the image's bottom left
     std::vector<glm::vec4> cornerColours; // empty: no COLOR_0; linear RGBA in [0, 1]

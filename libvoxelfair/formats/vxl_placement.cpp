@@ -34,4 +34,15 @@ glm::mat4 sectionToModel(const VxlSection &section, const Matrix3x4 *hvaMatrix) 
     return result;
 }
 
+glm::mat4 sectionPivotToModel(const VxlSection &section, const Matrix3x4 *hvaMatrix) {
+    const Matrix3x4 &m = hvaMatrix ? *hvaMatrix : section.transform;
+    const float translationScale = hvaMatrix ? section.scale : 1.0f;
+    glm::mat4 result(1.0f);
+    for (int row = 0; row < 3; ++row) {
+        for (int col = 0; col < 3; ++col) result[col][row] = m[size_t(row) * 4 + size_t(col)];
+        result[3][row] = m[size_t(row) * 4 + 3] * translationScale;
+    }
+    return result;
+}
+
 }  // namespace voxelfair

@@ -13,4 +13,8 @@ namespace voxelfair {
 // null) the tailer matrix is used as stored, its translation being already scaled.
 glm::mat4 sectionToModel(const VxlSection &section, const Matrix3x4 *hvaMatrix);
 
+// The section's rotation frame, (R | t * scale): the origin the game turns the section about.
+// sectionToModel = sectionPivotToModel * translate(minBounds) * scale(voxelScale).
+glm::mat4 sectionPivotToModel(const VxlSection &section, const Matrix3x4 *hvaMatrix);
+
 }  // namespace voxelfair

@@ -1,0 +1,200 @@
+#include "io_gltf_plugin.h"
+
+#include "scene_to_meshlab.h"
+
+#include "export/glb_writer.h"
+
+#include <QBuffer>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QImage>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+
+using namespace voxelfair;
+
+namespace {
+
+std::string local(const QString &s) { return s.toLocal8Bit().toStdString(); }
+
+QString env(const char *name) { return QString::fromLocal8Bit(qgetenv(name)).trimmed(); }
+
+float metresPerVoxelFromEnv() {
+    bool ok = false;
+    const float value = env("VOXELFAIR_METRES_PER_VOXEL").toFloat(&ok);
+    return ok && value > 0.0f && std::isfinite(value) ? value : GlbOptions{}.metresPerVoxel;
+}
+
+bool linearFromEnv() { return env("VOXELFAIR_TEXTURE_FILTER").compare("linear", Qt::CaseInsensitive) == 0; }
+
+// sRGB face colours to glTF's linear COLOR_0.
+float linearFromSrgb(unsigned char c) {
+    const float v = float(c) / 255.0f;
+    return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+}
+
+// The texture's file: as stored when absolute; else beside the .glb, beside the mesh's own file,
+// or in the working folder (the atlas filter stores the bare name and the wrapper saves beside it).
+QString findTexture(const QString &name, const QString &glbPath, const MeshModel &m) {
+    if (QFileInfo(name).isAbsolute()) return QFileInfo::exists(name) ? name : QString();
+    for (const QString &dir : {QFileInfo(glbPath).absolutePath(), QFileInfo(m.fullName()).absolutePath(), QDir::currentPath()}) {
+        const QString path = QDir(dir).filePath(name);
+        if (QFileInfo::exists(path)) return path;
+    }
+    return QString();
+}
+
+// PNG bytes as they are; any other image Qt reads is encoded as PNG.
+std::vector<uint8_t> pngBytes(const QString &path) {
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) return {};
+    const QByteArray data = file.readAll();
+    if (data.startsWith("\x89PNG\r\n\x1a\n")) return std::vector<uint8_t>(data.begin(), data.end());
+    QImage image;
+    if (!image.loadFromData(data)) return {};
+    QByteArray png;
+    QBuffer buffer(&png);
+    buffer.open(QIODevice::WriteOnly);
+    image.save(&buffer, "PNG");
+    return std::vector<uint8_t>(png.begin(), png.end());
+}
+
+}  // namespace
+
+QList<MeshIOInterface::Format> IoGltfPlugin::exportFormats() const {
+    return {Format("glTF 2.0 binary (Blender, Godot, Unity, three.js)", tr("GLB"))};
+}
+
+void IoGltfPlugin::GetExportMaskCapability(QString &, int &capability, int &defaultBits) const {
+    using vcg::tri::io::Mask;
+    capability = Mask::IOM_VERTNORMAL | Mask::IOM_WEDGTEXCOORD | Mask::IOM_VERTTEXCOORD | Mask::IOM_FACECOLOR;
+    defaultBits = capability;
+}
+
+void IoGltfPlugin::initSaveParameter(const QString &, MeshModel &, RichParameterList &parameters) {
+    parameters.addParam(RichFloat("metresPerVoxel", metresPerVoxelFromEnv(), "Metres per voxel",
+                                  "The size of one voxel (one unit of the imported model) in metres; glTF's unit is "
+                                  "the metre. 0.1: a 30-voxel tank is 3 m long."));
+    parameters.addParam(RichEnum("textureFilter", linearFromEnv() ? 1 : 0, QStringList() << "Nearest" << "Linear",
+                                 "Texture filter",
+                                 "Nearest keeps pixel art crisp (magFilter NEAREST, mipmapped minification); "
+                                 "Linear blurs it smoothly."));
+}
+
+void IoGltfPlugin::report(const QString &message) {
+    Log(local(message));
+    std::fprintf(stderr, "io_gltf: %s\n", local(message).c_str());
+}
+
+bool IoGltfPlugin::fail(const QString &message) {
+    errorMessage = message;
+    Log(GLLogStream::WARNING, local(message));
+    std::fprintf(stderr, "io_gltf: %s\n", local(message).c_str());
+    std::fflush(stderr);
+    return false;
+}
+
+bool IoGltfPlugin::save(const QString &, const QString &fileName, MeshModel &m, const int mask,
+                        const RichParameterList &parameters, vcg::CallBackPos *cb, QWidget *) {
+    using vcg::tri::io::Mask;
+    try {
+        CMeshO &cm = m.cm;
+        if (cm.fn == 0) return fail(fileName + ": the mesh has no faces to export");
+        GlbOptions options;
+        options.metresPerVoxel =
+            parameters.hasParameter("metresPerVoxel") ? parameters.getFloat("metresPerVoxel") : metresPerVoxelFromEnv();
+        options.textureFilter = (parameters.hasParameter("textureFilter") ? parameters.getEnum("textureFilter") == 1
+                                                                          : linearFromEnv())
+                                    ? TextureFilter::Linear
+                                    : TextureFilter::Nearest;
+        options.name = local(QFileInfo(fileName).completeBaseName());
+        if (!(options.metresPerVoxel > 0.0f)) return fail(fileName + ": metres per voxel must be positive");
+        if (cb) cb(0, "Converting the mesh");
+
+        GlbMesh mesh;
+        std::vector<uint32_t> index(cm.vert.size(), 0);
+        for (size_t i = 0; i < cm.vert.size(); ++i) {
+            if (cm.vert[i].IsD()) continue;
+            index[i] = uint32_t(mesh.positions.size());
+            const auto &p = cm.vert[i].P();
+            mesh.positions.emplace_back(p[0], p[1], p[2]);
+        }
+        {  // MeshLab's per-vertex normals (the pipeline's smoothed ones) when every one is usable
+            bool goodNormals = true;
+            mesh.normals.reserve(mesh.positions.size());
+            for (const CVertexO &v : cm.vert) {
+                if (v.IsD()) continue;
+                const glm::vec3 n(v.N()[0], v.N()[1], v.N()[2]);
+                const float length = glm::length(n);
+                if (!(length > 0.5f && std::isfinite(length))) goodNormals = false;
+                mesh.normals.push_back(n);
+            }
+            if (!goodNormals) mesh.normals.clear();  // the writer computes them from the faces
+        }
+
+        const ExportScene *scene = findExportScene(cm);
+        const bool hasParts = scene != nullptr && vcg::tri::HasPerFaceAttribute(cm, kPartAttributeName);
+        CMeshO::PerFaceAttributeHandle<int> part;
+        if (hasParts) part = vcg::tri::Allocator<CMeshO>::FindPerFaceAttribute<int>(cm, kPartAttributeName);
+
+        QString texturePath;
+        if (!cm.textures.empty()) texturePath = findTexture(QString::fromStdString(cm.textures[0]), fileName, m);
+        const bool wedgeUv = !texturePath.isEmpty() && cm.face.IsWedgeTexCoordEnabled();
+        const bool vertexUv = !texturePath.isEmpty() && !wedgeUv && cm.vert.IsTexCoordEnabled();
+        const bool colours = texturePath.isEmpty() && cm.face.IsColorEnabled();
+        size_t unplaced = 0;
+        for (const CFaceO &f : cm.face) {
+            if (f.IsD()) continue;
+            for (int k = 0; k < 3; ++k) {
+                mesh.triangles.push_back(index[size_t(vcg::tri::Index(cm, f.cV(k)))]);
+                if (wedgeUv) mesh.cornerUvs.emplace_back(f.cWT(k).U(), f.cWT(k).V());
+                if (vertexUv) mesh.cornerUvs.emplace_back(f.cV(k)->cT().U(), f.cV(k)->cT().V());
+                if (colours) {
+                    const vcg::Color4b c = f.cC();
+                    mesh.cornerColours.emplace_back(linearFromSrgb(c[0]), linearFromSrgb(c[1]), linearFromSrgb(c[2]), 1.0f);
+                }
+            }
+            if (hasParts) {
+                int node = scene->nodeOfPart(part[&f]);
+                if (node < 0) node = 0, ++unplaced;
+                mesh.triangleNodes.push_back(node);
+            }
+        }
+
+        GlbTexture texture;
+        if (!texturePath.isEmpty()) {
+            texture.png = pngBytes(texturePath);
+            texture.name = local(QFileInfo(texturePath).completeBaseName());
+            if (texture.png.empty()) return fail(fileName + ": could not read the texture " + texturePath);
+        } else if (!cm.textures.empty()) {
+            report(QString("%1: texture %2 not found; exported without it").arg(fileName, QString::fromStdString(cm.textures[0])));
+        }
+
+        if (cb) cb(50, "Writing glTF");
+        const std::vector<uint8_t> bytes =
+            writeGlb(mesh, hasParts ? *scene : ExportScene{}, texture.png.empty() ? nullptr : &texture, options);
+        QFile out(fileName);
+        if (!out.open(QIODevice::WriteOnly) || out.write(reinterpret_cast<const char *>(bytes.data()), qint64(bytes.size())) != qint64(bytes.size()))
+            return fail(fileName + ": could not write the file");
+        out.close();
+        report(QString("%1: %2 triangles, %3 nodes%4%5, %6 m per voxel, %7 texture filter, %8 bytes")
+                   .arg(QFileInfo(fileName).fileName())
+                   .arg(mesh.triangles.size() / 3)
+                   .arg(hasParts ? scene->nodes.size() : 1)
+                   .arg(hasParts && scene->frameCount() > 1 ? QString(", %1 animation frames").arg(scene->frameCount()) : QString())
+                   .arg(texture.png.empty() ? QString(colours ? ", face colours" : "") : QString(", texture embedded"))
+                   .arg(double(options.metresPerVoxel))
+                   .arg(options.textureFilter == TextureFilter::Nearest ? "nearest" : "linear")
+                   .arg(bytes.size()));
+        if (unplaced > 0) report(QString("%1 faces had no part node and went to the first node").arg(unplaced));
+        (void)mask;
+        if (cb) cb(100, "Done");
+        return true;
+    } catch (const std::exception &e) {
+        return fail(fileName + ": " + QString::fromLocal8Bit(e.what()));
+    }
+}
+
+MESHLAB_PLUGIN_NAME_EXPORTER(IoGltfPlugin)
