@@ -8,13 +8,19 @@ meshlabserver with voxelfair's plugins:
 
   --mode full     (default) import, fairing (paper 4.3), attribute smoothing (4.4), texture atlas
                   and baked PNG (4.5), MeshLab's quadric decimation with texture (4.6); writes
-                  NAME.ply and NAME.obj (+ NAME.obj.mtl) with NAME_texture.png beside them
+                  NAME.ply, NAME.obj (+ NAME.obj.mtl) and NAME.glb (glTF 2.0, texture embedded,
+                  one node per part, animation) with NAME_texture.png beside them (--formats)
   --mode import   the voxel surface only: NAME.ply with face colours and each face's section
   --mode compare  the same input through voxelfair's fairing (paper and constrained modes), through
                   MeshLab's Taubin, HC Laplacian and TwoStep Smooth, and (when the build has
                   it) VTK's windowed sinc: NAME_raw.ply, NAME_voxelfair.ply, NAME_constrained.ply,
                   NAME_taubin.ply, NAME_hc_laplacian.ply, NAME_twostep.ply, NAME_vtk.ply and the
                   seconds of each
+
+A unit is converted once: NAME.vxl brings NAMEtur.vxl and NAMEbarl.vxl along (the importer loads
+them), so a tur/barl file whose body is beside it is not converted on its own (--separate-parts
+keeps the old behaviour). Axes: glTF is always +Y up with the front towards +Z; OBJ follows its
+readers (--up y by default), PLY keeps the voxel model's frame (z up) unless --up y.
 
 Files run in parallel on the available cores. meshlabserver exits 0 even when it could not save
 and never prints an importer's error: this wrapper checks that every output really was written,
@@ -33,7 +39,7 @@ from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
 MODEL_SUFFIXES = (".vxl", ".vox")
-PLUGIN_PREFIXES = ("io_vxl:", "filter_voxelfair:")
+PLUGIN_PREFIXES = ("io_vxl:", "io_gltf:", "filter_voxelfair:")
 
 
 def find_meshlabserver(build):
@@ -49,7 +55,23 @@ def find_meshlabserver(build):
     sys.exit("voxelfair: no meshlabserver found: build the project (bash voxelfair.sh build) or install meshlab")
 
 
-def collect_inputs(paths):
+UNIT_SUFFIXES = ("tur", "barl")
+
+
+def is_unit_companion(model, models):
+    """NAMEtur.vxl / NAMEbarl.vxl whose body NAME.vxl is among the models (same folder)."""
+    if model.suffix.lower() != ".vxl":
+        return False
+    stem = model.stem.lower()
+    for suffix in UNIT_SUFFIXES:
+        if stem.endswith(suffix) and len(stem) > len(suffix):
+            body = stem[: -len(suffix)]
+            if any(m.parent == model.parent and m.stem.lower() == body and m.suffix.lower() == ".vxl" for m in models):
+                return True
+    return False
+
+
+def collect_inputs(paths, separate_parts=False):
     models = []
     for p in map(Path, paths):
         if p.is_dir():
@@ -60,6 +82,8 @@ def collect_inputs(paths):
             sys.exit(f"voxelfair: {p}: no such file or folder")
     if not models:
         sys.exit("voxelfair: no .vxl or .vox models found in " + ", ".join(paths))
+    if not separate_parts:
+        models = [m for m in models if not is_unit_companion(m, models)]
     names = {}
     for m in models:
         if m.stem in names:
@@ -78,7 +102,84 @@ def importer_environment(args):
     env["VOXELFAIR_FRAME"] = str(args.frame)
     env["VOXELFAIR_SECTION"] = str(args.section)
     env["VOXELFAIR_TRANSFORMS"] = "0" if args.no_transforms else "1"
+    env["VOXELFAIR_UNIT"] = "0" if args.separate_parts else "1"
+    env["VOXELFAIR_TURRET_OFFSET"] = repr(args.turret_offset)
+    env["VOXELFAIR_TEXTURE_FILTER"] = args.texture_filter
+    env["VOXELFAIR_METRES_PER_VOXEL"] = repr(args.metres_per_voxel)
     return env
+
+
+def to_y_up(model):
+    """(x, y, z) z-up model coordinates -> y-up with the model's front towards +z, as glTF does:
+    a VXL unit faces +x, a MagicaVoxel model -y."""
+    if model.suffix.lower() == ".vxl":
+        return lambda x, y, z: (y, z, x)
+    return lambda x, y, z: (x, z, -y)
+
+
+def turn_obj(path, turn):
+    """Rewrites the v and vn lines of an OBJ with `turn`."""
+    lines = []
+    for line in path.read_text().splitlines():
+        parts = line.split()
+        if parts and parts[0] in ("v", "vn") and len(parts) >= 4:
+            x, y, z = turn(*map(float, parts[1:4]))
+            line = " ".join([parts[0], f"{x:.6f}", f"{y:.6f}", f"{z:.6f}"] + parts[4:])
+        lines.append(line)
+    path.write_text("\n".join(lines) + "\n")
+
+
+def turn_ply(path, turn):
+    """Turns the x y z and nx ny nz float properties of a PLY's vertices (ASCII or binary)."""
+    import struct
+    data = path.read_bytes()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    header = data[:end].decode("ascii").splitlines()
+    fmt = header[1].split()[1]
+    kinds = {"char": "b", "uchar": "B", "int8": "b", "uint8": "B", "short": "h", "ushort": "H", "int16": "h",
+             "uint16": "H", "int": "i", "uint": "I", "int32": "i", "uint32": "I", "float": "f", "float32": "f",
+             "double": "d", "float64": "d"}
+    props, count, in_vertex = [], 0, False
+    for line in header:
+        words = line.split()
+        if words[:1] == ["element"]:
+            in_vertex = words[1] == "vertex"
+            if in_vertex:
+                count = int(words[2])
+        elif words[:1] == ["property"] and in_vertex:
+            if words[1] == "list":
+                raise RuntimeError(f"{path}: list properties on vertices are not supported")
+            props.append((words[2], kinds[words[1]]))
+    names = [n for n, _ in props]
+    groups = [[names.index(a) for a in g] for g in (("x", "y", "z"), ("nx", "ny", "nz")) if all(a in names for a in g)]
+    if fmt == "ascii":
+        text = data[end:].decode("ascii").split("\n")
+        for i in range(count):
+            values = text[i].split()
+            for g in groups:
+                turned = turn(*(float(values[k]) for k in g))
+                for k, v in zip(g, turned):
+                    values[k] = f"{v:.6f}"
+            text[i] = " ".join(values)
+        path.write_bytes(data[:end] + "\n".join(text).encode("ascii"))
+        return
+    order = "<" if fmt == "binary_little_endian" else ">"
+    record = struct.Struct(order + "".join(k for _, k in props))
+    body = bytearray(data[end:])
+    for i in range(count):
+        values = list(record.unpack_from(body, i * record.size))
+        for g in groups:
+            for k, v in zip(g, turn(*(values[k] for k in g))):
+                values[k] = v
+        record.pack_into(body, i * record.size, *values)
+    path.write_bytes(data[:end] + bytes(body))
+
+
+def matte_mtl(path):
+    """No specular highlight: vcglib writes Ks 1 1 1, which makes painted voxels look like wet plastic."""
+    lines = ["Ks 0.000000 0.000000 0.000000" if line.split()[:1] == ["Ks"] else line
+             for line in path.read_text().splitlines()]
+    path.write_text("\n".join(lines) + "\n")
 
 
 def pipeline_script(args, texture):
@@ -171,20 +272,29 @@ def convert(model, args, run):
             details.append(f"vtk {time.monotonic() - begun:.2f} s")
         return outputs, time.monotonic() - started, details
 
-    ply, obj = out / f"{name}.ply", out / f"{name}.obj"
+    ply, obj, glb = out / f"{name}.ply", out / f"{name}.obj", out / f"{name}.glb"
     texture = out / f"{name}_texture.png"
     with tempfile.TemporaryDirectory(prefix="voxelfair-script-") as tmp:
         script = Path(tmp) / "pipeline.mlx"
         script.write_text(pipeline_script(args, texture))
         # Saved without face colours: the texture holds them now, and vcglib's OBJ writer would
-        # otherwise make one material per face colour.
-        code, output, _ = run(["-i", str(model), "-o", str(ply), "-m", "wt", "vn", "-s", str(script)])
-    check([ply, texture], code, output)
+        # otherwise make one material per face colour. The .glb is written by the same run: the
+        # parts' node tree travels with the imported mesh through the filters.
+        arguments = ["-i", str(model), "-o", str(ply), "-m", "wt", "vn"]
+        if "glb" in args.formats:
+            arguments += ["-o", str(glb), "-m", "wt", "vn"]
+        code, output, _ = run(arguments + ["-s", str(script)])
+    check([ply, texture] + ([glb] if "glb" in args.formats else []), code, output)
     details += [line.split(": ", 1)[1] for line in output.splitlines() if line.startswith("filter_voxelfair: Texture Atlas")]
     if "obj" in args.formats:
         code, output, _ = run(["-i", str(ply), "-o", str(obj), "-m", "wt", "vn"])
         check([obj, out / f"{name}.obj.mtl"], code, output)
-    outputs = [ply, texture] + ([obj] if "obj" in args.formats else [])
+        matte_mtl(out / f"{name}.obj.mtl")
+        if args.up_obj == "y":
+            turn_obj(obj, to_y_up(model))
+    if "ply" in args.formats and args.up_ply == "y":
+        turn_ply(ply, to_y_up(model))
+    outputs = [ply, texture] + [out / f"{name}.{f}" for f in ("obj", "glb") if f in args.formats]
     if "ply" not in args.formats:
         ply.unlink()
         outputs.remove(ply)
@@ -197,7 +307,16 @@ def main():
     parser.add_argument("inputs", nargs="+", help="model files or folders")
     parser.add_argument("--output", "-o", required=True, help="output folder")
     parser.add_argument("--mode", choices=("full", "import", "compare"), default="full")
-    parser.add_argument("--formats", default="ply,obj", help="full mode: ply, obj or both (default ply,obj)")
+    parser.add_argument("--formats", default="ply,obj,glb", help="full mode: any of ply, obj, glb (default ply,obj,glb)")
+    parser.add_argument("--up", choices=("y", "z"),
+                        help="up axis of OBJ and PLY (default: OBJ y, as its readers expect; PLY z, the model's frame)")
+    parser.add_argument("--texture-filter", choices=("nearest", "linear"), default="nearest",
+                        help="glTF texture sampling: nearest keeps pixel art crisp (default), linear blurs")
+    parser.add_argument("--metres-per-voxel", type=float, default=0.1, help="glTF scale: metres per voxel (default 0.1)")
+    parser.add_argument("--turret-offset", type=float, default=0.0,
+                        help="VXL units: the art rules' TurretOffset in leptons (default 0)")
+    parser.add_argument("--separate-parts", action="store_true",
+                        help="VXL: convert NAMEtur/NAMEbarl files on their own and bodies without them")
     parser.add_argument("--palette", help="a .pal file for VXL colours")
     parser.add_argument("--house-colour", help="house colour for palette entries 16..31 (Red, Blue, Green, Gold, ...)")
     parser.add_argument("--frame", type=int, default=0, help="animation frame (VXL: .hva; VOX: scene graph), default 0")
@@ -217,8 +336,12 @@ def main():
     parser.add_argument("--build", help="voxelfair build folder holding runtime/ (default: ./build)")
     args = parser.parse_args()
     args.formats = [f.strip().lower() for f in args.formats.split(",") if f.strip()]
-    if not args.formats or any(f not in ("ply", "obj") for f in args.formats):
-        sys.exit("voxelfair: --formats takes ply, obj or ply,obj")
+    if not args.formats or any(f not in ("ply", "obj", "glb") for f in args.formats):
+        sys.exit("voxelfair: --formats takes a comma-separated list of ply, obj, glb")
+    args.up_obj = args.up or "y"
+    args.up_ply = args.up or "z"
+    if not args.metres_per_voxel > 0:
+        sys.exit("voxelfair: --metres-per-voxel must be positive")
     if not 0.0 < args.decimate <= 1.0:
         sys.exit("voxelfair: --decimate takes a share of the faces in (0, 1]")
     if args.passes < 1 or args.texels_per_voxel <= 0:
@@ -230,7 +353,7 @@ def main():
     args.output = str(Path(args.output).resolve())
 
     run = Run(find_meshlabserver(args.build), importer_environment(args), args.timeout)
-    models = collect_inputs(args.inputs)
+    models = collect_inputs(args.inputs, args.separate_parts)
     Path(args.output).mkdir(parents=True, exist_ok=True)
 
     failures = 0

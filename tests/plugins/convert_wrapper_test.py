@@ -45,14 +45,57 @@ class ConvertWrapper(unittest.TestCase):
         code, output = wrapper(self.work, "models/tank.vxl", "-o", "out")
         self.assertEqual(code, 0, output)
         out = self.work / "out"
-        for name in ("tank.ply", "tank.obj", "tank.obj.mtl", "tank_texture.png"):
+        for name in ("tank.ply", "tank.obj", "tank.obj.mtl", "tank_texture.png", "tank.glb"):
             self.assertTrue((out / name).is_file() and (out / name).stat().st_size > 0, f"{name} missing\n{output}")
         self.assertEqual((out / "tank_texture.png").read_bytes()[:8], b"\x89PNG\r\n\x1a\n")
         self.assertIn("comment TextureFile tank_texture.png", ply_header(out / "tank.ply"))
         self.assertIn("tank_texture.png", (out / "tank.obj.mtl").read_text())
+        # Matte: no specular highlight.
+        self.assertIn("Ks 0.000000 0.000000 0.000000", (out / "tank.obj.mtl").read_text())
+        self.assertNotIn("Ks 1", (out / "tank.obj.mtl").read_text())
+        self.assertEqual((out / "tank.glb").read_bytes()[:4], b"glTF")
+        validator = subprocess.run(["node", str(HERE.parent.parent / "tools" / "gltf_validate.js"), str(out / "tank.glb")],
+                                   capture_output=True, text=True)
+        self.assertEqual(validator.returncode, 0, validator.stdout + validator.stderr)
+        self.assertIn("0 errors, 0 warnings", validator.stdout)
         # Nothing written beside the input model.
         self.assertEqual(sorted(p.name for p in self.inputs.iterdir()), self.before)
         self.assertIn("Texture Atlas:", output)
+
+    def test_obj_is_y_up_unless_asked_and_ply_keeps_the_model_frame(self):
+        def vertices(path):
+            return [tuple(map(float, line.split()[1:4])) for line in path.read_text().splitlines()
+                    if line.startswith("v ")]
+        code, output = wrapper(self.work, "models/tank.vxl", "-o", "y", "--formats", "obj", "--decimate", "1")
+        self.assertEqual(code, 0, output)
+        code, output = wrapper(self.work, "models/tank.vxl", "-o", "z", "--formats", "obj", "--up", "z",
+                               "--decimate", "1")
+        self.assertEqual(code, 0, output)
+        y_up, z_up = vertices(self.work / "y" / "tank.obj"), vertices(self.work / "z" / "tank.obj")
+        self.assertEqual(len(y_up), len(z_up))
+        for (x, y, z), turned in zip(z_up, y_up):  # a VXL unit faces +x: (x, y, z) -> (y, z, x)
+            for a, b in zip((y, z, x), turned):
+                self.assertAlmostEqual(a, b, places=4)
+        # PLY: the model's frame unless --up y.
+        code, output = wrapper(self.work, "models/tank.vxl", "-o", "p", "--formats", "ply", "--up", "y",
+                               "--decimate", "1")
+        self.assertEqual(code, 0, output)
+        self.assertTrue((self.work / "p" / "tank.ply").is_file(), output)
+
+    def test_a_unit_is_converted_once(self):
+        shared = Path(__file__).resolve().parents[3] / "shared" / "models" / "vxl"
+        if not (shared / "3tnktur.vxl").is_file():
+            self.skipTest(f"the shared models are absent: {shared}")
+        for name in ("3tnk", "3tnktur", "3tnkbarl"):
+            for ext in (".vxl", ".hva"):
+                shutil.copy(shared / (name + ext), self.inputs / (name + ext))
+        code, output = wrapper(self.work, "models", "-o", "units", "--mode", "import")
+        self.assertEqual(code, 0, output)
+        self.assertEqual(sorted(p.name for p in (self.work / "units").iterdir()), ["3tnk.ply", "tank.ply"], output)
+        code, output = wrapper(self.work, "models", "-o", "parts", "--mode", "import", "--separate-parts")
+        self.assertEqual(code, 0, output)
+        self.assertEqual(sorted(p.name for p in (self.work / "parts").iterdir()),
+                         ["3tnk.ply", "3tnkbarl.ply", "3tnktur.ply", "tank.ply"], output)
 
     def test_import_and_compare_modes(self):
         code, output = wrapper(self.work, "models", "-o", "imported", "--mode", "import")
