@@ -141,7 +141,7 @@ bool FilterVoxelfairPlugin::applyTextureAtlas(MeshModel &m, const RichParameterL
     if (cb) cb(80, "Writing the texture");
     const QString path = texturePath(m, parameters.getString("textureFile").trimmed());
     if (QFileInfo(path).fileName().isEmpty()) return fail("Texture Atlas: the texture file name is empty");
-    const QImage image(atlas.texture.rgba.data(), atlas.texture.size, atlas.texture.size, atlas.texture.size * 4,
+    const QImage image(atlas.texture.rgba.data(), atlas.texture.width, atlas.texture.height, atlas.texture.width * 4,
                        QImage::Format_RGBA8888);
     if (!QDir().mkpath(QFileInfo(path).absolutePath()) || !image.save(path, "PNG"))
         return fail(QString("Texture Atlas: could not write the texture to %1").arg(path));

@@ -6,6 +6,9 @@
 //   atlas_report --all            also boxes, a torus, blobs, raw voxel spheres
 //   atlas_report --models         also real VXL models from ../shared/models (sections side by
 //                                 side, boundary quads of section 4.2, Taubin-smoothed)
+//   atlas_report --shared         only every shared model (vxl/, vox/) through the whole chain at
+//                                 the atlas filter's defaults: coverage, charts per thousand faces,
+//                                 crispness per model
 //   atlas_report --ppm DIR        also writes each texture as DIR/<mesh>_<mode>.ppm
 //   atlas_report --gutter N       texels between charts (default 4; the bake fills N/2 of them)
 #include "atlas/atlas_measures.h"
@@ -13,6 +16,7 @@
 #include "atlas/atlas_test_meshes.h"
 
 #ifdef VOXELFAIR_ATLAS_REPORT_MODELS
+#include "../tools/pipeline_stages.h"
 #include "extraction/boundary_surface.h"
 #include "formats/file_bytes.h"
 #include "formats/format_error.h"
@@ -20,7 +24,10 @@
 #include "formats/vxl.h"
 #endif
 
+#include <algorithm>
 #include <chrono>
+#include <filesystem>
+#include <memory>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -40,13 +47,14 @@ void writePpm(const std::string &path, const AtlasTexture &t) {
     FILE *f = std::fopen(path.c_str(), "wb");
     if (!f)
         return;
-    std::fprintf(f, "P6\n%d %d\n255\n", t.size, t.size);
+    std::fprintf(f, "P6\n%d %d\n255\n", t.width, t.height);
     for (size_t i = 0; i < t.rgba.size(); i += 4)
         std::fwrite(&t.rgba[i], 1, 3, f);
     std::fclose(f);
 }
 
 int gutter = PackOptions().gutter;
+bool noFill = false, square = false;
 
 void report(const TestMesh &mesh, int textureSize, float texelsPerUnit, const char *ppmDir) {
     const AtlasMesh view = mesh.view();
@@ -138,24 +146,99 @@ bool loadVxl(const std::string &name, TestMesh &mesh) {
         return false;
     }
 }
+
+// Every shared model (vxl/ and vox/), through the chain as the plugins run it (extraction,
+// the paper's fairing, attributes, atlas) at the atlas filter's defaults: one row per model.
+void reportShared(const char *ppmDir) {
+    namespace fs = std::filesystem;
+    const std::string dir = VOXELFAIR_MODELS_DIR;
+    std::vector<fs::path> files;
+    for (const char *sub : {"vxl", "vox"})
+        if (fs::is_directory(dir + "/" + sub))
+            for (const fs::directory_entry &e : fs::directory_iterator(dir + "/" + sub))
+                if (e.path().extension() == ".vxl" || e.path().extension() == ".vox")
+                    files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+    if (files.empty()) {
+        std::printf("\n--shared: no models in %s\n", dir.c_str());
+        return;
+    }
+    AtlasOptions options;
+    options.pack.texelsPerUnit = 8.0f;  // the filter's default
+    options.pack.fillTexture = !noFill;
+    options.pack.allowWide = !square;
+    std::printf("\nShared models, chain at the filter's defaults (%g texels per voxel, max %d):\n", double(options.pack.texelsPerUnit), options.pack.maxTextureSize);
+    std::printf("  %-14s %7s %6s %11s %8s %7s %6s %8s %7s %7s %6s %5s %8s\n", "model", "faces", "charts", "texture",
+                "texel/v", "cover%", "ctr%", "ch/kface", "near%", "bilin%", "sep", "over", "atlas ms");
+    std::vector<double> covers;
+    for (const fs::path &file : files) {
+        std::unique_ptr<pipeline::Model> model;
+        try {
+            model = file.extension() == ".vox" ? pipeline::loadVox(file.string())
+                                               : pipeline::loadVxl(file.string(), dir + "/pal");
+        } catch (const std::exception &e) {
+            std::printf("  %-14s skipped: %s\n", file.filename().c_str(), e.what());
+            continue;
+        }
+        pipeline::QuadMesh mesh = pipeline::extract(model->scene);
+        if (mesh.quadCount() == 0) {
+            std::printf("  %-14s skipped: no surface\n", file.filename().c_str());
+            continue;
+        }
+        pipeline::fair(mesh);
+        const pipeline::Attributes a = pipeline::smoothAttributes(mesh);
+        const AtlasMesh view = pipeline::atlasMesh(mesh, a);
+        const auto t0 = std::chrono::steady_clock::now();
+        const TextureAtlas atlas = pipeline::buildAtlas(mesh, a, options);
+        const double ms = msSince(t0);
+        if (atlas.status() != AtlasStatus::Ok) {
+            std::printf("  %-14s failed: %s\n", file.filename().c_str(), atlas.message().c_str());
+            continue;
+        }
+        const AtlasMeasures m = measureAtlas(view, atlas.charts, atlas.layout);
+        const ColourFidelity fid = measureColourFidelity(view, atlas.layout, atlas.texture);
+        covers.push_back(m.packingEfficiency);
+        const std::string texture = std::to_string(atlas.layout.width) + "x" + std::to_string(atlas.layout.height);
+        std::printf("  %-14s %7zu %6zu %11s %8.3f %7.2f %6.2f %8.2f %7.3f %7.3f %6zu %5zu %8.1f\n",
+                    file.filename().c_str(), view.faceCount, atlas.charts.chartCount(), texture.c_str(),
+                    atlas.layout.texelsPerUnit * mesh.voxelSize, 100 * m.packingEfficiency, 100 * m.centreEfficiency,
+                    1000.0 * double(atlas.charts.chartCount()) / double(view.faceCount), 100 * fid.nearest(),
+                    100 * fid.bilinear(), atlas.charts.separatedFaces,
+                    m.overlappingChartTexels + m.overlappingCentres, ms);
+        if (ppmDir)
+            writePpm(std::string(ppmDir) + "/" + file.stem().string() + "_shared.ppm", atlas.texture);
+    }
+    std::sort(covers.begin(), covers.end());
+    if (!covers.empty())
+        std::printf("  coverage over %zu models: median %.2f%%, lowest %.2f%%\n", covers.size(),
+                    100 * (covers.size() % 2 ? covers[covers.size() / 2]
+                                             : 0.5 * (covers[covers.size() / 2 - 1] + covers[covers.size() / 2])),
+                    100 * covers.front());
+}
 #endif
 
 }  // namespace
 
 int main(int argc, char **argv) {
-    bool all = false, models = false;
+    bool all = false, models = false, shared = false;
     const char *ppmDir = nullptr;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--all"))
             all = true;
         else if (!std::strcmp(argv[i], "--models"))
             models = true;
+        else if (!std::strcmp(argv[i], "--shared"))
+            shared = true;
+        else if (!std::strcmp(argv[i], "--no-fill"))
+            noFill = true;
+        else if (!std::strcmp(argv[i], "--square"))
+            square = true;
         else if (!std::strcmp(argv[i], "--ppm") && i + 1 < argc)
             ppmDir = argv[++i];
         else if (!std::strcmp(argv[i], "--gutter") && i + 1 < argc)
             gutter = std::atoi(argv[++i]);
         else {
-            std::fprintf(stderr, "usage: %s [--all] [--models] [--ppm DIR] [--gutter N]\n", argv[0]);
+            std::fprintf(stderr, "usage: %s [--all] [--models] [--shared] [--ppm DIR] [--gutter N]\n", argv[0]);
             return 2;
         }
     }
@@ -174,6 +257,14 @@ int main(int argc, char **argv) {
         report(voxelBox(12, 7, 3), 256, 0, ppmDir);
         report(smoothed(voxelSphere(20)), 0, 8, ppmDir);
         report(smoothed(voxelSphere(70), 4), 0, 2, ppmDir);
+    }
+    if (shared) {
+#ifdef VOXELFAIR_ATLAS_REPORT_MODELS
+        reportShared(ppmDir);
+#else
+        std::printf("\n--shared: built without the formats and extraction units\n");
+#endif
+        return 0;
     }
     if (models) {
 #ifdef VOXELFAIR_ATLAS_REPORT_MODELS

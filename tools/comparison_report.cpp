@@ -284,7 +284,7 @@ Pictures renderPictures(const ModelRun &run, const fs::path &folder, int size) {
         RenderMesh textured = meshOf(run.ours);
         textured.vertexNormals = run.ours.displayNormals.data();
         textured.wedgeUv = run.ours.atlas.layout.wedgeUv.data();
-        textured.texture = {run.ours.atlas.texture.size, run.ours.atlas.texture.size, run.ours.atlas.texture.rgba.data()};
+        textured.texture = {run.ours.atlas.texture.width, run.ours.atlas.texture.height, run.ours.atlas.texture.rgba.data()};
         add(renderMesh(textured, view, options), "textured", "ours + atlas texture, smooth normals");
         out.texture = stem + "_texture.png";
         const AtlasTexture &t = run.ours.atlas.texture;
@@ -508,7 +508,7 @@ int main(int argc, char **argv) {
                                o.hasAtlas ? std::to_string(o.atlasVertices) : "-",
                                o.hasAtlas ? std::to_string(o.atlas.layout.wedgeUv.size() / 3) : "-",
                                o.hasAtlas ? std::to_string(o.atlas.charts.chartCount()) : "-",
-                               o.hasAtlas ? format("%d^2", o.atlas.texture.size) : o.atlas.message()});
+                               o.hasAtlas ? format("%dx%d", o.atlas.texture.width, o.atlas.texture.height) : o.atlas.message()});
     }
     md << counts.markdown() << "\n";
 

@@ -32,17 +32,17 @@ SingularValues mapSingularValues(const glm::dvec3 p[3], const glm::dvec2 q[3]) {
 
 void loadUv(const AtlasLayout &layout, size_t f, glm::dvec2 q[3]) {
     for (int k = 0; k < 3; ++k)
-        q[k] = glm::dvec2(layout.wedgeUv[3 * f + k]) * double(layout.size);
+        q[k] = glm::dvec2(layout.wedgeUv[3 * f + k]) * glm::dvec2(layout.width, layout.height);
 }
 
 }  // namespace
 
 AtlasMeasures measureAtlas(const AtlasMesh &mesh, const AtlasCharts &charts, const AtlasLayout &layout) {
     AtlasMeasures m;
-    if (layout.status != AtlasStatus::Ok || layout.size <= 0)
+    if (layout.status != AtlasStatus::Ok || layout.width <= 0 || layout.height <= 0)
         return m;
-    const int size = layout.size;
-    const size_t texels = size_t(size) * size;
+    const int size = layout.width, height = layout.height;
+    const size_t texels = size_t(size) * size_t(height);
     constexpr uint32_t kShared = UINT32_MAX;
     std::vector<uint32_t> owner(texels, 0);  // chart + 1, or kShared
     std::vector<uint8_t> centres(texels, 0);
@@ -57,7 +57,7 @@ AtlasMeasures measureAtlas(const AtlasMesh &mesh, const AtlasCharts &charts, con
             loadUv(layout, f, q);
             if (!(doubleArea(q[0], q[1], q[2]) > 0))
                 ++m.facesWithoutUvArea;
-            rasterConservative(q[0], q[1], q[2], kMargin, size, size, [&](int x, int y) {
+            rasterConservative(q[0], q[1], q[2], kMargin, size, height, [&](int x, int y) {
                 uint32_t &o = owner[size_t(y) * size + x];
                 if (o == 0) {
                     o = tag;
@@ -67,7 +67,7 @@ AtlasMeasures measureAtlas(const AtlasMesh &mesh, const AtlasCharts &charts, con
                     ++m.overlappingChartTexels;
                 }
             });
-            rasterCentres(q[0], q[1], q[2], size, size, [&](int x, int y) {
+            rasterCentres(q[0], q[1], q[2], size, height, [&](int x, int y) {
                 uint8_t &n = centres[size_t(y) * size + x];
                 if (n == 1)
                     ++m.overlappingCentres;
@@ -99,11 +99,11 @@ AtlasMeasures measureAtlas(const AtlasMesh &mesh, const AtlasCharts &charts, con
 
 ColourFidelity measureColourFidelity(const AtlasMesh &mesh, const AtlasLayout &layout, const AtlasTexture &texture) {
     ColourFidelity r;
-    if (!mesh.faceColours || texture.size <= 0 || layout.wedgeUv.size() != 3 * mesh.faceCount)
+    if (!mesh.faceColours || texture.width <= 0 || texture.height <= 0 || layout.wedgeUv.size() != 3 * mesh.faceCount)
         return r;
-    const int size = texture.size;
+    const int size = texture.width, height = texture.height;
     auto nearest = [&](glm::dvec2 p) {
-        const int x = std::clamp(int(std::floor(p.x)), 0, size - 1), y = std::clamp(int(std::floor(p.y)), 0, size - 1);
+        const int x = std::clamp(int(std::floor(p.x)), 0, size - 1), y = std::clamp(int(std::floor(p.y)), 0, height - 1);
         return glm::u8vec3(texture.texel(x, y));
     };
     auto bilinear = [&](glm::dvec2 p) {
@@ -111,7 +111,7 @@ ColourFidelity measureColourFidelity(const AtlasMesh &mesh, const AtlasLayout &l
         glm::dvec3 sum(0.0);
         for (int dy = 0; dy < 2; ++dy)
             for (int dx = 0; dx < 2; ++dx) {
-                const int x = std::clamp(int(base.x) + dx, 0, size - 1), y = std::clamp(int(base.y) + dy, 0, size - 1);
+                const int x = std::clamp(int(base.x) + dx, 0, size - 1), y = std::clamp(int(base.y) + dy, 0, height - 1);
                 const double k = (dx ? w.x : 1 - w.x) * (dy ? w.y : 1 - w.y);
                 sum += glm::dvec3(glm::u8vec3(texture.texel(x, y))) * k;
             }

@@ -35,18 +35,19 @@ struct Texel {
 // The image with a one-texel frame, rows from the top, so neighbours are fixed offsets and the
 // rows copy straight into AtlasTexture::rgba.
 struct Canvas {
-    int size, pitch;
+    int height, pitch;
     std::vector<Texel> texels;
     std::vector<uint8_t> state;
-    Canvas(int size, Texel background)
-        : size(size), pitch(size + 2), texels(size_t(pitch) * pitch, background), state(texels.size(), kEmpty) {
-        for (int i = 0; i < pitch; ++i) {
-            state[size_t(i)] = state[size_t(pitch - 1) * pitch + i] = kWall;
-            state[size_t(i) * pitch] = state[size_t(i) * pitch + pitch - 1] = kWall;
-        }
+    Canvas(int width, int height, Texel background)
+        : height(height), pitch(width + 2), texels(size_t(pitch) * size_t(height + 2), background),
+          state(texels.size(), kEmpty) {
+        for (int i = 0; i < pitch; ++i)
+            state[size_t(i)] = state[size_t(height + 1) * pitch + i] = kWall;
+        for (int j = 0; j < height + 2; ++j)
+            state[size_t(j) * pitch] = state[size_t(j) * pitch + pitch - 1] = kWall;
     }
     // Layout texel (x, y), y up.
-    size_t index(int x, int y) const { return size_t(size - y) * pitch + size_t(x + 1); }
+    size_t index(int x, int y) const { return size_t(height - y) * pitch + size_t(x + 1); }
 };
 
 BakeSource chooseSource(const AtlasMesh &mesh, BakeSource wanted, std::string &note) {
@@ -120,16 +121,17 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
     out.message = layout.message;
     if (out.status != AtlasStatus::Ok)
         return out;
-    if (layout.wedgeUv.size() != 3 * mesh.faceCount || layout.size <= 0) {
+    if (layout.wedgeUv.size() != 3 * mesh.faceCount || layout.width <= 0 || layout.height <= 0) {
         out.status = AtlasStatus::InvalidInput;
         out.message = "the layout was made for another mesh";
         return out;
     }
     out.source = chooseSource(mesh, options.source, out.note);
-    out.size = layout.size;
-    const int size = layout.size;
+    out.size = out.width = layout.width;
+    out.height = layout.height;
+    const int width = layout.width, height = layout.height;
     const glm::u8vec4 bg = options.background;
-    Canvas canvas(size, Texel{bg.r, bg.g, bg.b, bg.a});
+    Canvas canvas(width, height, Texel{bg.r, bg.g, bg.b, bg.a});
 
     auto paint = [&](int x, int y, glm::u8vec3 c, uint8_t how) {
         const size_t i = canvas.index(x, y);
@@ -155,11 +157,11 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
         return glm::u8vec3(glm::clamp(glm::round(c), 0.0, 255.0));
     };
 
-    const double side = size;
+    const glm::dvec2 extent(width, height);
     glm::dvec2 q[3];
     auto load = [&](size_t f) {
         for (int k = 0; k < 3; ++k)
-            q[k] = glm::dvec2(layout.wedgeUv[3 * f + k]) * side;
+            q[k] = glm::dvec2(layout.wedgeUv[3 * f + k]) * extent;
     };
     // One pass: a face paints the texels whose centre it holds (no other face holds them), then
     // those it only overlaps that nothing painted yet; a later face's centre texels overwrite
@@ -174,9 +176,9 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
             if (inradius > 0 && inradius < std::sqrt(2.0))
                 thin.push_back(uint32_t(f));
         }
-        rasterCentres(q[0], q[1], q[2], size, size,
+        rasterCentres(q[0], q[1], q[2], width, height,
                       [&](int x, int y) { paint(x, y, colourAt(f, q, x + 0.5, y + 0.5), kCentre); });
-        rasterConservative(q[0], q[1], q[2], kBakeMargin, size, size, [&](int x, int y) {
+        rasterConservative(q[0], q[1], q[2], kBakeMargin, width, height, [&](int x, int y) {
             if (canvas.state[canvas.index(x, y)] == kEmpty)
                 paint(x, y, colourAt(f, q, x + 0.5, y + 0.5), kEdge);
         });
@@ -191,15 +193,15 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
         load(f);
         faceInteriorPoints(q, points);
         for (const glm::dvec2 &p : points)
-            paint(std::clamp(int(std::floor(p.x)), 0, size - 1), std::clamp(int(std::floor(p.y)), 0, size - 1),
+            paint(std::clamp(int(std::floor(p.x)), 0, width - 1), std::clamp(int(std::floor(p.y)), 0, height - 1),
                   mesh.faceColours[f], kCentre);
     }
-    out.dilation = options.dilation < 0 ? layout.gutter / 2 : std::min(options.dilation, size);
+    out.dilation = options.dilation < 0 ? layout.gutter / 2 : std::min(options.dilation, width);
     dilate(canvas, out.dilation);
-    out.rgba.resize(size_t(size) * size * 4);
-    for (int row = 0; row < size; ++row)
-        std::memcpy(&out.rgba[size_t(row) * size * 4], &canvas.texels[size_t(row + 1) * canvas.pitch + 1],
-                    size_t(size) * sizeof(Texel));
+    out.rgba.resize(size_t(width) * size_t(height) * 4);
+    for (int row = 0; row < height; ++row)
+        std::memcpy(&out.rgba[size_t(row) * size_t(width) * 4], &canvas.texels[size_t(row + 1) * canvas.pitch + 1],
+                    size_t(width) * sizeof(Texel));
     return out;
 }
 

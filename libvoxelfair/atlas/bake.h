@@ -47,9 +47,10 @@ struct BakeOptions {
 struct AtlasTexture {
     AtlasStatus status = AtlasStatus::Ok;
     std::string message;
-    int size = 0;
-    // size x size RGBA8 texels, rows from the top of the image (v = 1) down, as PNG and QImage
-    // store them: texel (x, y) of the layout (y up) is at row size - 1 - y.
+    int size = 0;  // the width, kept from when textures were always square
+    int width = 0, height = 0;
+    // width x height RGBA8 texels, rows from the top of the image (v = 1) down, as PNG and QImage
+    // store them: texel (x, y) of the layout (y up) is at row height - 1 - y.
     std::vector<uint8_t> rgba;
     BakeSource source = BakeSource::FaceColours;  // what was actually baked
     int dilation = 0;                              // rings actually filled
@@ -57,7 +58,7 @@ struct AtlasTexture {
 
     // The texel at layout coordinates (x, y), y up.
     glm::u8vec4 texel(int x, int y) const {
-        const uint8_t *p = &rgba[(size_t(size - 1 - y) * size + x) * 4];
+        const uint8_t *p = &rgba[(size_t(height - 1 - y) * size_t(width) + size_t(x)) * 4];
         return {p[0], p[1], p[2], p[3]};
     }
 };

@@ -49,7 +49,7 @@ void turnedShape(const ChartMask &m, const std::vector<int16_t> &profiles, int t
                      [&](int a, int b) { return s.length(a) > s.length(b); });
 }
 
-// The free texels of a square atlas, row by row. run(y)[x] > 0: x is free and starts a free run
+// The free texels of a width x height atlas, row by row. run(y)[x] > 0: x is free and starts a free run
 // of exactly that length; run(y)[x] < 0: x is taken, and so are the next -run(y)[x] - 1 texels
 // (a safe jump, maybe short of the next free texel). Per block of kBlock texels, the longest run
 // starting in it lets searches skip whole blocks.
@@ -57,14 +57,14 @@ class FreeRuns {
 public:
     static constexpr int kBlock = 64;
 
-    explicit FreeRuns(int side)
-        : side_(side), blocks_((side + kBlock - 1) / kBlock), run_(size_t(side) * side),
-          blockMax_(size_t(side) * blocks_), widest_(size_t(side), int16_t(side)), firstRow_(size_t(side) + 1, 0) {
-        for (int y = 0; y < side; ++y) {
-            for (int x = 0; x < side; ++x)
-                run_[size_t(y) * side + x] = int16_t(side - x);
+    FreeRuns(int width, int height)
+        : side_(width), height_(height), blocks_((width + kBlock - 1) / kBlock), run_(size_t(width) * height),
+          blockMax_(size_t(height) * blocks_), widest_(size_t(height), int16_t(width)), firstRow_(size_t(width) + 1, 0) {
+        for (int y = 0; y < height; ++y) {
+            for (int x = 0; x < width; ++x)
+                run_[size_t(y) * width + x] = int16_t(width - x);
             for (int b = 0; b < blocks_; ++b)
-                blockMax_[size_t(y) * blocks_ + b] = int16_t(side - b * kBlock);
+                blockMax_[size_t(y) * blocks_ + b] = int16_t(width - b * kBlock);
         }
     }
 
@@ -75,7 +75,7 @@ public:
     // length's answer only moves up: amortised O(side) per length over a whole packing.
     int firstRow(int length) {
         int &row = firstRow_[size_t(length)];
-        while (row < side_ && widest_[size_t(row)] < length)
+        while (row < height_ && widest_[size_t(row)] < length)
             ++row;
         return row;
     }
@@ -122,17 +122,17 @@ public:
     }
 
 private:
-    int side_, blocks_;
+    int side_, height_, blocks_;  // side_: the width
     std::vector<int16_t> run_, blockMax_, widest_;
     std::vector<int> firstRow_;
 };
 
-// The lowest, then leftmost, free place for `shape` in a side x side atlas from row y, column x
+// The lowest, then leftmost, free place for `shape` in a width x height atlas from row y, column x
 // on, with its top below `topLimit`. Returns true with (y, x) set; false with y at the first row
 // not searched.
-bool lowestFit(const FreeRuns &runs, const Shape &shape, int side, int topLimit, int &y, int &x) {
+bool lowestFit(const FreeRuns &runs, const Shape &shape, int side, int height, int topLimit, int &y, int &x) {
     const int wr = shape.widestFirst[0], wrLength = shape.length(wr);
-    for (; y + shape.height <= side && y + shape.height < topLimit; ++y, x = 0) {
+    for (; y + shape.height <= height && y + shape.height < topLimit; ++y, x = 0) {
         // Every row of the chart needs a long enough run somewhere in its atlas row.
         bool possible = true;
         for (int r : shape.widestFirst)
@@ -168,7 +168,8 @@ bool lowestFit(const FreeRuns &runs, const Shape &shape, int side, int topLimit,
 
 }  // namespace
 
-TightPacking packTight(const ChartMasks &masks, int side, bool allowTurns, std::vector<ChartPlacement> &placements) {
+TightPacking packTight(const ChartMasks &masks, int side, int height, bool allowTurns,
+                        std::vector<ChartPlacement> &placements) {
     TightPacking result;
     const size_t charts = masks.charts.size();
     placements.assign(charts, ChartPlacement{});
@@ -185,7 +186,7 @@ TightPacking packTight(const ChartMasks &masks, int side, bool allowTurns, std::
     // Small charts go in as their bounding boxes, in two turns. Where the search for a box size
     // ended is a lower bound for the next box of that size, as the atlas only fills up: each
     // size scans the atlas at most once in all, which keeps thousands of micro charts cheap.
-    const int64_t shapedArea = int64_t(side) * side / 1024;
+    const int64_t shapedArea = int64_t(side) * height / 1024;
     std::unordered_map<uint32_t, std::pair<int, int>> boxCursor;  // (width << 16 | height) -> (y, x)
 
     // The room the charts will take (boxes, or row spans) cannot exceed the atlas.
@@ -201,17 +202,17 @@ TightPacking packTight(const ChartMasks &masks, int side, bool allowTurns, std::
             needed += r[y] - l[y] + 1;
     }
     result.room = size_t(needed);
-    if (needed > int64_t(side) * side)
+    if (needed > int64_t(side) * height)
         return result;
 
-    FreeRuns runs(side);
+    FreeRuns runs(side, height);
     Shape shape, best;
     for (uint32_t c : order) {
         const bool box = area(c) < shapedArea;
         int bestTop = INT32_MAX;
         for (int turns = 0; turns < (allowTurns ? (box ? 2 : 4) : 1); ++turns) {
             turnedShape(masks.charts[c], masks.profiles, turns, box, shape);
-            if (shape.width > side || shape.height > side)
+            if (shape.width > side || shape.height > height)
                 continue;
             int y = std::max(0, runs.firstRow(shape.length(shape.widestFirst[0])) - shape.widestFirst[0]), x = 0;
             std::pair<int, int> *cursor = nullptr;
@@ -220,7 +221,7 @@ TightPacking packTight(const ChartMasks &masks, int side, bool allowTurns, std::
                 if (cursor->first >= y)
                     std::tie(y, x) = *cursor;
             }
-            const bool found = lowestFit(runs, shape, side, bestTop, y, x);
+            const bool found = lowestFit(runs, shape, side, height, bestTop, y, x);
             if (cursor)  // nothing of this size fits before here, now or later
                 *cursor = {y, found ? x : 0};
             if (found) {

@@ -24,7 +24,8 @@ struct TightPacking {
     size_t placedRoom = 0;
 };
 
-// Packs into a side x side square (side <= 16383).
-TightPacking packTight(const ChartMasks &masks, int side, bool allowTurns, std::vector<ChartPlacement> &placements);
+// Packs into a side x height rectangle, side the width (both <= 16383).
+TightPacking packTight(const ChartMasks &masks, int side, int height, bool allowTurns,
+                       std::vector<ChartPlacement> &placements);
 
 }  // namespace voxelfair

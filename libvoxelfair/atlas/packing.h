@@ -9,11 +9,17 @@
 //   * Tight - bottom-left fill of the charts' rasterised shapes, holes between charts
 //             included, with quarter turns (pack_tight.h): 76% on the same sphere. The default.
 //
-// Size: with textureSize = 0 the density is texelsPerUnit and the side is the smallest power
-// of two holding the charts, at most maxTextureSize; if even that is too small the density is
-// lowered until the charts fit (densityReduced). With textureSize > 0 the side is fixed and
-// the density is the largest that fits (searched to within 0.5%, 4 to 10 packings): the
-// authors' fixed 1024 x 1024 texture, and how packing efficiency is measured.
+// Size, two modes:
+//   * density -> texture (textureSize = 0, the default): texelsPerUnit is the least density; the
+//     texture is the smallest power of two holding the charts at it, square or 2:1 (s x s/2,
+//     width the longer side, allowWide), at most maxTextureSize; then, with fillTexture, the
+//     density is raised to the largest that still fits that texture (within 0.5%; at most
+//     fillAttempts more packings), so the charts fill it instead of leaving up to three quarters
+//     empty after rounding. If even the largest texture is too small the density is lowered
+//     until the charts fit (densityReduced).
+//   * texture -> density (textureSize > 0): the side is fixed (textureHeight: a non-square one)
+//     and the density is the largest that fits (4 to 10 packings): the authors' fixed
+//     1024 x 1024 texture, and how packing efficiency is measured.
 #pragma once
 
 #include "atlas/chart_masks.h"
@@ -39,6 +45,14 @@ struct PackOptions {
     float texelsPerUnit = 4.0f;
     // 0: derive the side from texelsPerUnit (above). > 0: this exact side, densest fit.
     int textureSize = 0;
+    // With textureSize > 0: the height, when not square (0: textureSize). Tight packing only.
+    int textureHeight = 0;
+    // Density mode: allow a 2:1 texture (s x s/2) where the charts fit one. Tight packing only.
+    bool allowWide = true;
+    // Density mode: raise the density to fill the texture chosen (texelsPerUnit is then a
+    // minimum), with at most this many more packings. Tight packing only.
+    bool fillTexture = true;
+    int fillAttempts = 2;
     // Largest side when textureSize = 0, rounded down to a power of two, at most 16384.
     int maxTextureSize = 4096;
     // Empty texels kept between any two charts; charts also stay gutter/2 texels from the
@@ -57,12 +71,15 @@ struct AtlasLayout {
     std::string message;  // the error, or with Ok why the density was lowered
 
     PackMode mode = PackMode::Tight;
-    int size = 0;               // the texture is size x size texels
+    // The texture is width x height texels, width >= height (2:1 at most unless textureHeight
+    // asks otherwise). size is the width, kept from when the layout was always square.
+    int size = 0;
+    int width = 0, height = 0;
     double texelsPerUnit = 0;   // the density used, identical for every chart
     bool densityReduced = false;
     int gutter = 0;             // as used (even)
     // Three per face, in [0, 1]^2 with v up (OpenGL / OBJ convention): texel (x, y) of the
-    // size x size texture covers [x, x+1]/size x [y, y+1]/size.
+    // width x height texture covers [x, x+1]/width x [y, y+1]/height.
     std::vector<glm::vec2> wedgeUv;
     std::vector<ChartPlacement> placements;  // per chart, in texels
     size_t packAttempts = 0;     // packings tried while searching the density

@@ -358,8 +358,25 @@ TEST(Packing, EveryFamilyEveryModeIsValid) {
             const AtlasLayout byDensity = packCharts(charts, density);
             expectValidAtlas(mesh, charts, byDensity, 0.7f);
             EXPECT_FALSE(byDensity.densityReduced);
-            EXPECT_EQ(byDensity.texelsPerUnit, 8.0);
-            EXPECT_EQ(byDensity.size & (byDensity.size - 1), 0) << "not a power of two: " << byDensity.size;
+            // The density is a minimum, raised to fill the texture (tight packing).
+            EXPECT_GE(byDensity.texelsPerUnit, 8.0);
+            if (mode == PackMode::Paper) {
+                EXPECT_EQ(byDensity.texelsPerUnit, 8.0);
+            }
+            for (int side : {byDensity.width, byDensity.height})
+                EXPECT_EQ(side & (side - 1), 0) << "not a power of two: " << side;
+            EXPECT_TRUE(byDensity.width == byDensity.height || byDensity.width == 2 * byDensity.height)
+                << byDensity.width << " x " << byDensity.height;
+            EXPECT_EQ(byDensity.size, byDensity.width);
+
+            // The same texture at the least density: the fill only raised it.
+            PackOptions least = density;
+            least.fillTexture = false;
+            const AtlasLayout atLeast = packCharts(charts, least);
+            expectValidAtlas(mesh, charts, atLeast, 0.7f);
+            EXPECT_EQ(atLeast.texelsPerUnit, 8.0);
+            EXPECT_EQ(atLeast.width, byDensity.width);
+            EXPECT_EQ(atLeast.height, byDensity.height);
 
             PackOptions fixed = density;
             fixed.textureSize = 256;
@@ -474,22 +491,22 @@ TEST(Bake, DilationFillsExactlyTheRequestedRings) {
         options.bake.dilation = rings;
         const TextureAtlas atlas = buildTextureAtlas(mesh.view(), options);
         ASSERT_EQ(atlas.status(), AtlasStatus::Ok);
-        const int size = atlas.texture.size;
-        std::vector<uint8_t> covered(size_t(size) * size, 0);
+        const int size = atlas.texture.width, height = atlas.texture.height;
+        std::vector<uint8_t> covered(size_t(size) * height, 0);
         for (size_t f = 0; f < mesh.faceCount(); ++f) {
             glm::dvec2 q[3];
             for (int k = 0; k < 3; ++k)
-                q[k] = glm::dvec2(atlas.layout.wedgeUv[3 * f + k]) * double(size);
-            rasterConservative(q[0], q[1], q[2], -1.0 / 256, size, size,
+                q[k] = glm::dvec2(atlas.layout.wedgeUv[3 * f + k]) * glm::dvec2(size, height);
+            rasterConservative(q[0], q[1], q[2], -1.0 / 256, size, height,
                                [&](int x, int y) { covered[size_t(y) * size + x] = 1; });
         }
-        for (int y = 0; y < size; ++y)
+        for (int y = 0; y < height; ++y)
             for (int x = 0; x < size; ++x) {
                 int distance = INT32_MAX;  // Chebyshev distance to the nearest covered texel
                 for (int dy = -rings - 1; dy <= rings + 1; ++dy)
                     for (int dx = -rings - 1; dx <= rings + 1; ++dx) {
                         const int u = x + dx, v = y + dy;
-                        if (u >= 0 && v >= 0 && u < size && v < size && covered[size_t(v) * size + u])
+                        if (u >= 0 && v >= 0 && u < size && v < height && covered[size_t(v) * size + u])
                             distance = std::min(distance, std::max(std::abs(dx), std::abs(dy)));
                     }
                 const uint8_t alpha = atlas.texture.texel(x, y).a;
@@ -506,16 +523,16 @@ TEST(Bake, GouraudStaysBetweenTheVertexColours) {
     const TextureAtlas atlas = buildTextureAtlas(mesh.view(), options);
     ASSERT_EQ(atlas.status(), AtlasStatus::Ok);
     EXPECT_EQ(atlas.texture.source, BakeSource::VertexColours);
-    const int size = atlas.texture.size;
+    const int size = atlas.texture.width, height = atlas.texture.height;
     for (size_t f = 0; f < mesh.faceCount(); ++f) {
         glm::dvec2 q[3];
         glm::ivec3 lo(255), hi(0);
         for (int k = 0; k < 3; ++k) {
-            q[k] = glm::dvec2(atlas.layout.wedgeUv[3 * f + k]) * double(size);
+            q[k] = glm::dvec2(atlas.layout.wedgeUv[3 * f + k]) * glm::dvec2(size, height);
             const glm::ivec3 c = glm::ivec3(mesh.vertexColours[mesh.triangles[3 * f + k]]);
             lo = glm::min(lo, c), hi = glm::max(hi, c);
         }
-        rasterCentres(q[0], q[1], q[2], size, size, [&](int x, int y) {
+        rasterCentres(q[0], q[1], q[2], size, height, [&](int x, int y) {
             const glm::ivec3 t = glm::ivec3(glm::u8vec3(atlas.texture.texel(x, y)));
             EXPECT_TRUE(glm::all(glm::greaterThanEqual(t, lo - 1)) && glm::all(glm::lessThanEqual(t, hi + 1)));
         });
@@ -535,8 +552,8 @@ TEST(Bake, FallsBackWhenColoursAreMissing) {
     EXPECT_EQ(t.source, BakeSource::FlatColour);
     EXPECT_FALSE(t.note.empty());
     size_t opaque = 0;
-    for (int y = 0; y < t.size; ++y)
-        for (int x = 0; x < t.size; ++x)
+    for (int y = 0; y < t.height; ++y)
+        for (int x = 0; x < t.width; ++x)
             if (t.texel(x, y).a == 255) {
                 ++opaque;
                 EXPECT_EQ(glm::u8vec3(t.texel(x, y)), BakeOptions().flatColour);
