@@ -129,6 +129,11 @@ bool FilterVoxelfairPlugin::applyTextureAtlas(MeshModel &m, const RichParameterL
     if (!(texelsPerVoxel > 0.0f)) return fail("Texture Atlas: texels per voxel must be positive");
     options.pack.texelsPerUnit = texelsPerVoxel / voxelSize;
     options.pack.maxTextureSize = parameters.getInt("maxTextureSize");
+    const int textureSize = parameters.getInt("textureSize");
+    if (textureSize < 0 || textureSize > 16384) return fail("Texture Atlas: the texture size must be 0 (from the density) to 16384");
+    options.pack.textureSize = textureSize;
+    options.pack.fillTexture = parameters.getBool("fillTexture");
+    options.pack.allowWide = parameters.getBool("wideTextures");
     options.pack.gutter = parameters.getInt("gutter");
     options.bake.source = parameters.getEnum("colours") == 1 ? BakeSource::VertexColours : BakeSource::FaceColours;
 
@@ -161,10 +166,10 @@ bool FilterVoxelfairPlugin::applyTextureAtlas(MeshModel &m, const RichParameterL
     m.cm.textures.clear();
     m.cm.textures.push_back(QFileInfo(path).fileName().toStdString());
 
-    report(QString("Texture Atlas: %1 charts, %2 x %2 texture at %3 texels per voxel%4 (%5 packing), %6 baked%7 -> %8 "
+    report(QString("Texture Atlas: %1 charts, %2 texture at %3 texels per voxel%4 (%5 packing), %6 baked%7 -> %8 "
                    "in %9 ms")
                .arg(atlas.charts.chartCount())
-               .arg(atlas.layout.size)
+               .arg(QString("%1 x %2").arg(atlas.layout.width).arg(atlas.layout.height))
                .arg(atlas.layout.texelsPerUnit * double(voxelSize), 0, 'g', 3)
                .arg(atlas.layout.densityReduced ? " (reduced to fit the maximum size)" : "")
                .arg(toString(atlas.layout.mode))
@@ -176,14 +181,20 @@ bool FilterVoxelfairPlugin::applyTextureAtlas(MeshModel &m, const RichParameterL
         report(QString("Texture Atlas: %1 faces too thin for the texel grid got charts of their own, so every face keeps "
                        "its voxel colour")
                    .arg(atlas.charts.separatedFaces));
+    if (atlas.crispDensity > double(options.pack.texelsPerUnit) * 1.001)
+        report(QString("Texture Atlas: %1 texels per voxel would leave too many faces too thin for their voxel colour: "
+                       "raised to at least %2")
+                   .arg(double(texelsPerVoxel), 0, 'g', 3)
+                   .arg(atlas.crispDensity * double(voxelSize), 0, 'g', 3));
     if (atlas.texture.source == BakeSource::FaceColours && !atlas.crispGuaranteed)
         report(QString("Texture Atlas: warning: at %1 texels per voxel %2 of %3 faces are too thin to be sure of "
-                       "their voxel colour in every texel (separating them would take more than %4% of the faces); "
-                       "raise Texels per voxel for exact crisp colours")
+                       "their voxel colour in every texel, and the %4 x %5 texture has no room to separate them; "
+                       "give a larger Texture size, or 0 to size it from the density")
                    .arg(atlas.layout.texelsPerUnit * double(voxelSize), 0, 'g', 3)
                    .arg(atlas.crowded.crowdedFaces)
                    .arg(atlas.charts.faceCount())
-                   .arg(100.0 * options.maxSeparatedShare, 0, 'g', 3));
+                   .arg(atlas.layout.width)
+                   .arg(atlas.layout.height));
     if (atlas.charts.nonManifoldEdges > 0 || atlas.charts.degenerateFaces > 0)
         report(QString("Texture Atlas: %1 non-manifold edges used as chart borders, %2 degenerate faces given their own "
                        "texel")

@@ -116,9 +116,18 @@ void FilterVoxelfairPlugin::initParameterSet(QAction *action, MeshModel &m, Rich
                                      "Tight: bottom-left fill of the charts' rasterised shapes with quarter turns "
                                      "(dense). Paper: the authors' guillotine merge of bounding boxes."));
         parameters.addParam(RichFloat("texelsPerVoxel", 8.0f, "Texels per voxel",
-                                      "Texture resolution: texels along one voxel edge. 8 keeps every interior point of "
-                                      "every face on its own voxel colour; the side is rounded up "
-                                      "to a power of two."));
+                                      "The least texture resolution: texels along one voxel edge. The texture is the "
+                                      "smallest power of two holding the charts at it (square or 2:1); thin faces get "
+                                      "more texels or their own charts so every face keeps its voxel colour."));
+        parameters.addParam(RichInt("textureSize", 0, "Texture size (0: from the density)",
+                                    "0: the size follows Texels per voxel (above). Otherwise this square size, at the "
+                                    "highest texels per voxel that fits it."));
+        parameters.addParam(RichBool("fillTexture", true, "Fill the texture",
+                                     "With a size from the density: raise the density until the charts fill the "
+                                     "texture chosen, instead of leaving what rounding up to a power of two left empty."));
+        parameters.addParam(RichBool("wideTextures", true, "Allow 2:1 textures",
+                                     "With a size from the density: a texture twice as wide as tall when the charts fit "
+                                     "one, half the memory of the square."));
         parameters.addParam(RichInt("maxTextureSize", 4096, "Maximum texture size",
                                     "The largest texture side; if the charts do not fit, the resolution is lowered."));
         parameters.addParam(RichFloat("voxelSize", 0.0f, "Voxel size",

@@ -55,6 +55,7 @@ void writePpm(const std::string &path, const AtlasTexture &t) {
 
 int gutter = PackOptions().gutter;
 bool noFill = false, square = false;
+const char *only = nullptr;  // --only NAME: one shared model
 
 void report(const TestMesh &mesh, int textureSize, float texelsPerUnit, const char *ppmDir) {
     const AtlasMesh view = mesh.view();
@@ -156,7 +157,8 @@ void reportShared(const char *ppmDir) {
     for (const char *sub : {"vxl", "vox"})
         if (fs::is_directory(dir + "/" + sub))
             for (const fs::directory_entry &e : fs::directory_iterator(dir + "/" + sub))
-                if (e.path().extension() == ".vxl" || e.path().extension() == ".vox")
+                if ((e.path().extension() == ".vxl" || e.path().extension() == ".vox") &&
+                    (!only || e.path().stem() == only))
                     files.push_back(e.path());
     std::sort(files.begin(), files.end());
     if (files.empty()) {
@@ -233,12 +235,14 @@ int main(int argc, char **argv) {
             noFill = true;
         else if (!std::strcmp(argv[i], "--square"))
             square = true;
+        else if (!std::strcmp(argv[i], "--only") && i + 1 < argc)
+            only = argv[++i];
         else if (!std::strcmp(argv[i], "--ppm") && i + 1 < argc)
             ppmDir = argv[++i];
         else if (!std::strcmp(argv[i], "--gutter") && i + 1 < argc)
             gutter = std::atoi(argv[++i]);
         else {
-            std::fprintf(stderr, "usage: %s [--all] [--models] [--shared] [--ppm DIR] [--gutter N]\n", argv[0]);
+            std::fprintf(stderr, "usage: %s [--all] [--models] [--shared [--only NAME] [--no-fill] [--square]] [--ppm DIR] [--gutter N]\n", argv[0]);
             return 2;
         }
     }

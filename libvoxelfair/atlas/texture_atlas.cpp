@@ -1,6 +1,25 @@
 #include "atlas/texture_atlas.h"
 
+#include "atlas/texel_raster.h"
+
+#include <cmath>
+
 namespace voxelfair {
+namespace {
+
+// The charts' projected area (model units squared, degenerate charts left out).
+double chartArea(const AtlasCharts &charts) {
+    double area = 0;
+    for (size_t c = 0; c < charts.chartCount(); ++c)
+        if (!charts.isDegenerate(c))
+            for (uint32_t i = charts.chartFirstFace[c]; i < charts.chartFirstFace[c + 1]; ++i) {
+                const glm::vec2 *uv = &charts.wedgeUv[3 * size_t(i)];
+                area += 0.5 * std::abs(doubleArea(uv[0], uv[1], uv[2]));
+            }
+    return area;
+}
+
+}  // namespace
 
 TextureAtlas buildTextureAtlas(const AtlasMesh &mesh, const AtlasOptions &options) {
     TextureAtlas atlas;
@@ -8,22 +27,41 @@ TextureAtlas buildTextureAtlas(const AtlasMesh &mesh, const AtlasOptions &option
     const bool crisp = options.maxSeparatedShare > 0 && options.bake.source == BakeSource::FaceColours &&
                        mesh.faceColours != nullptr && atlas.charts.status == AtlasStatus::Ok;
     double separatedAt = 0;  // the density the charts were last separated for
-    auto separate = [&](double density) {
-        atlas.crowded = separateCrowdedFaces(mesh, atlas.charts, {density, options.maxSeparatedShare});
+    auto separate = [&](double density, double share) {
+        atlas.crowded = separateCrowdedFaces(mesh, atlas.charts, {density, share});
         separatedAt = density;
         return atlas.crowded.separatedFaces > 0;
     };
-    if (crisp && options.pack.textureSize <= 0)
-        separate(options.pack.texelsPerUnit);
-    atlas.layout = packCharts(atlas.charts, options.pack);
+    PackOptions pack = options.pack;
+    if (crisp && pack.textureSize <= 0) {
+        // Density mode. Where too many faces are crowded, each step of sqrt 2 moves interior
+        // points apart by that factor: raise the density while the charts (twice their area for
+        // gutters and packing) stay within the largest texture, then separate what is left.
+        double density = pack.texelsPerUnit;
+        const double area = chartArea(atlas.charts);
+        const double largest = double(std::clamp(pack.maxTextureSize, 1, 16384));
+        separate(density, options.maxSeparatedShare);
+        while (options.alwaysCrisp && atlas.crowded.overBudget() &&
+               2 * area * (2 * density * density) <= largest * largest) {
+            density *= std::sqrt(2.0);
+            separate(density, options.maxSeparatedShare);
+        }
+        if (options.alwaysCrisp && atlas.crowded.overBudget())
+            separate(density, 1.0);
+        pack.texelsPerUnit = float(density);
+        atlas.crispDensity = density;
+    }
+    atlas.layout = packCharts(atlas.charts, pack);
     // A fixed size (or the maximum size) sets the density only while packing: separate for the
     // density found, a little below it since the separated charts take room, and pack again.
     // Separating for a density serves every higher one. Separated charts lower the density, which
-    // can crowd more faces; if that ends over the budget, the first packing is kept (denser).
+    // can crowd more faces: with alwaysCrisp they are separated too, round after round; without
+    // it, if that ends over the budget, the first packing is kept (denser).
     AtlasCharts firstCharts;
     AtlasLayout firstLayout;
     CrowdedFaces firstCrowded;
-    for (int round = 0; crisp && round < 4 && atlas.layout.status == AtlasStatus::Ok; ++round) {
+    for (int round = 0; crisp && round < (options.alwaysCrisp ? 8 : 4) && atlas.layout.status == AtlasStatus::Ok;
+         ++round) {
         const double found = atlas.layout.texelsPerUnit;
         if (found >= separatedAt && separatedAt > 0)
             break;
@@ -32,16 +70,19 @@ TextureAtlas buildTextureAtlas(const AtlasMesh &mesh, const AtlasOptions &option
             firstLayout = atlas.layout;
         }
         const bool fixed = options.pack.textureSize > 0 || atlas.layout.densityReduced;
-        const bool separated = separate(fixed ? found * 0.98 : found);
+        const bool separated =
+            separate(fixed ? found * 0.98 : found, options.alwaysCrisp ? 1.0 : options.maxSeparatedShare);
         if (round == 0)
             firstCrowded = atlas.crowded;
         if (!separated)
             break;  // nothing more to separate: the layout stands
-        atlas.layout = packCharts(atlas.charts, options.pack);
+        atlas.layout = packCharts(atlas.charts, pack);
     }
     atlas.crispGuaranteed = crisp && atlas.layout.status == AtlasStatus::Ok && !atlas.crowded.overBudget() &&
                             atlas.layout.texelsPerUnit >= separatedAt;
-    if (crisp && !atlas.crispGuaranteed && !firstCharts.chartAxis.empty()) {
+    // Kept as well when separating made the charts too many for a fixed size at any density.
+    if (crisp && !atlas.crispGuaranteed && (!options.alwaysCrisp || atlas.layout.status != AtlasStatus::Ok) &&
+        !firstCharts.chartAxis.empty()) {
         atlas.charts = std::move(firstCharts);
         atlas.layout = std::move(firstLayout);
         atlas.crowded = firstCrowded;

@@ -24,9 +24,13 @@ struct AtlasOptions {
     PackOptions pack;
     BakeOptions bake;
     // Crisp bakes only: give crowded thin faces their own charts (crowded_faces.h), so every
-    // interior point of every face reads its face's colour, unless more than this share of the
-    // faces would need it (a texture too coarse for the model). 0 turns it off.
+    // interior point of every face reads its face's colour. When more than this share of the
+    // faces would need it (a density too coarse for the model), alwaysCrisp decides: raise the
+    // density instead (steps of sqrt 2, density mode, while the charts' area fits the largest
+    // texture), else separate them all; without alwaysCrisp nothing is separated and the
+    // result says so (crispGuaranteed false). 0 turns the separation off.
     double maxSeparatedShare = 0.1;
+    bool alwaysCrisp = true;
 };
 
 struct TextureAtlas {
@@ -39,6 +43,9 @@ struct TextureAtlas {
     // crowded.crowdedFaces counts the faces that may read a neighbour's colour somewhere.
     CrowdedFaces crowded;
     bool crispGuaranteed = false;
+    // The least density the layout was packed for, raised from PackOptions::texelsPerUnit when
+    // too many faces were crowded at it (alwaysCrisp); 0 with a fixed texture size.
+    double crispDensity = 0;
 
     // The first failing stage's status and message (stages after a failure return empty).
     AtlasStatus status() const { return texture.status; }
