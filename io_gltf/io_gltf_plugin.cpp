@@ -5,6 +5,7 @@
 #include "export/glb_writer.h"
 
 #include <QBuffer>
+#include <QElapsedTimer>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -100,6 +101,8 @@ bool IoGltfPlugin::save(const QString &, const QString &fileName, MeshModel &m, 
                         const RichParameterList &parameters, vcg::CallBackPos *cb, QWidget *) {
     using vcg::tri::io::Mask;
     try {
+        QElapsedTimer timer;
+        timer.start();
         CMeshO &cm = m.cm;
         if (cm.fn == 0) return fail(fileName + ": the mesh has no faces to export");
         GlbOptions options;
@@ -179,7 +182,7 @@ bool IoGltfPlugin::save(const QString &, const QString &fileName, MeshModel &m, 
         if (!out.open(QIODevice::WriteOnly) || out.write(reinterpret_cast<const char *>(bytes.data()), qint64(bytes.size())) != qint64(bytes.size()))
             return fail(fileName + ": could not write the file");
         out.close();
-        report(QString("%1: %2 triangles, %3 nodes%4%5, %6 m per voxel, %7 texture filter, %8 bytes")
+        report(QString("%1: %2 triangles, %3 nodes%4%5, %6 m per voxel, %7 texture filter, %8 bytes in %9 ms")
                    .arg(QFileInfo(fileName).fileName())
                    .arg(mesh.triangles.size() / 3)
                    .arg(hasParts ? scene->nodes.size() : 1)
@@ -187,7 +190,8 @@ bool IoGltfPlugin::save(const QString &, const QString &fileName, MeshModel &m, 
                    .arg(texture.png.empty() ? QString(colours ? ", face colours" : "") : QString(", texture embedded"))
                    .arg(double(options.metresPerVoxel))
                    .arg(options.textureFilter == TextureFilter::Nearest ? "nearest" : "linear")
-                   .arg(bytes.size()));
+                   .arg(bytes.size())
+                   .arg(timer.elapsed()));
         if (unplaced > 0) report(QString("%1 faces had no part node and went to the first node").arg(unplaced));
         (void)mask;
         if (cb) cb(100, "Done");

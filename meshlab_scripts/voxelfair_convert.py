@@ -286,6 +286,7 @@ def convert(model, args, run):
         code, output, _ = run(arguments + ["-s", str(script)])
     check([ply, texture] + ([glb] if "glb" in args.formats else []), code, output)
     details += [line.split(": ", 1)[1] for line in output.splitlines() if line.startswith("filter_voxelfair: Texture Atlas")]
+    details += ["glTF " + line.split(": ", 2)[2] for line in output.splitlines() if line.startswith("io_gltf: ")]
     if "obj" in args.formats:
         code, output, _ = run(["-i", str(ply), "-o", str(obj), "-m", "wt", "vn"])
         check([obj, out / f"{name}.obj.mtl"], code, output)

@@ -1,7 +1,7 @@
 // The comparison report: how our chain (paper sections 4.2-4.5) compares with MeshLab's Taubin
 // Smooth on the shared real models and on voxelized analytic shapes, in numbers and pictures.
 //
-//   comparison_report [output folder] [--size N]     (default folder: <build>/report, N = 560)
+//   comparison_report [output folder] [--size N] [--only MODEL]   (default folder: <build>/report, N = 560)
 //
 // Writes <folder>/report.md (also printed) and, per model, PNG pictures seen from the same
 // camera: raw voxels, Taubin (10 steps), ours (one pass of the paper's fairing), the constrained
@@ -357,11 +357,14 @@ std::string ms(double v) { return v < 10 ? format("%.2f", v) : format("%.1f", v)
 int main(int argc, char **argv) {
     fs::path folder = VOXELFAIR_DEFAULT_REPORT_DIR;
     int size = 560;
+    std::string only;  // --only NAME: that model's pictures and rows alone (e.g. to refresh one strip)
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--size") == 0 && i + 1 < argc)
             size = std::max(64, std::atoi(argv[++i]));
+        else if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc)
+            only = argv[++i];
         else if (argv[i][0] == '-') {
-            std::fprintf(stderr, "usage: %s [output folder] [--size pixels]\n", argv[0]);
+            std::fprintf(stderr, "usage: %s [output folder] [--size pixels] [--only MODEL]\n", argv[0]);
             return 2;
         } else
             folder = argv[i];
@@ -377,8 +380,17 @@ int main(int argc, char **argv) {
     std::vector<Input> inputs;
     std::vector<std::string> skipped;
     for (const std::string &path : sortedFiles(models / "vxl", ".vxl")) {
+        // A unit is shown whole under its body's name: its turret and barrel files not again.
+        const std::string stem = fs::path(path).stem().string();
+        bool companion = false;
+        for (const char *suffix : {"tur", "barl"}) {
+            const size_t n = std::strlen(suffix);
+            companion = companion || (stem.size() > n && stem.compare(stem.size() - n, n, suffix) == 0 &&
+                                      fs::exists(fs::path(path).parent_path() / (stem.substr(0, stem.size() - n) + ".vxl")));
+        }
+        if (companion) continue;
         try {
-            Input in{pipeline::loadVxl(path, (models / "pal").string()), "VXL"};
+            Input in{pipeline::loadVxl(path, (models / "pal").string(), true), "VXL"};
             if (in.model->solidVoxels() < kMinSolidVoxels)
                 skipped.push_back(format("%s (%zu voxels)", in.model->name.c_str(), in.model->solidVoxels()));
             else
@@ -403,6 +415,9 @@ int main(int argc, char **argv) {
         inputs.push_back({pipeline::volumeModel(shape.name, std::move(volume), shapePalette()), "shape", &shape});
     }
 
+    if (!only.empty())
+        inputs.erase(std::remove_if(inputs.begin(), inputs.end(), [&](const Input &in) { return in.model->name != only; }),
+                     inputs.end());
     std::vector<ModelRun> runs;
     std::vector<Pictures> pictures;
     for (const Input &in : inputs) {

@@ -22,6 +22,7 @@
 #include "formats/palette.h"
 #include "formats/vox.h"
 #include "formats/vxl.h"
+#include "scene/unit_scene.h"
 #include "scene/vox_scene.h"
 #include "scene/voxel_scene.h"
 #include "scene/vxl_scene.h"
@@ -57,6 +58,7 @@ struct Model {
     std::string paletteSource;  // VXL: which palette coloured it
     VxlModel vxl;
     std::optional<HvaAnimation> hva;
+    std::vector<UnitFile> unit;  // a whole unit: body, turret, barrel (empty for a single file)
     VoxFile vox;
     std::vector<VoxelVolume> volumes;  // for models built from volumes
     // What the chain runs on. VXL sections stay in their own voxel units, as the authors ran
@@ -85,11 +87,12 @@ struct Model {
     }
 };
 
-// A .vxl with the .hva beside it (same stem) when there is one, frame 0. When the embedded
+// A .vxl with the .hva beside it (same stem) when there is one, frame 0; with `wholeUnit`, a
+// unit's body with its turret and barrel files (scene/unit_scene.h). When the embedded
 // palette is all zeros (many community files), the game palette from `paletteDir` matching the
 // model's normal type (ts_unittem.pal for Tiberian Sun, ra2_unittem.pal otherwise) colours it.
 // Throws FormatError.
-inline std::unique_ptr<Model> loadVxl(const std::string &path, const std::string &paletteDir) {
+inline std::unique_ptr<Model> loadVxl(const std::string &path, const std::string &paletteDir, bool wholeUnit = false) {
     auto model = std::make_unique<Model>();
     model->name = std::filesystem::path(path).stem().string();
     const std::vector<uint8_t> bytes = readFileBytes(path);
@@ -115,6 +118,34 @@ inline std::unique_ptr<Model> loadVxl(const std::string &path, const std::string
     if (model->paletteSource.empty())
         model->paletteSource = chooseVxlPalette(model->vxl, options).source;
     const HvaAnimation *hva = model->hva ? &*model->hva : nullptr;
+    // A unit's body brings its turret and barrel (NAMEtur.vxl, NAMEbarl.vxl beside it), as the
+    // importer does: the whole tank, each file by its own .hva.
+    if (wholeUnit && !isUnitCompanionStem(model->name)) {
+        for (UnitRole role : {UnitRole::Turret, UnitRole::Barrel}) {
+            const std::filesystem::path companion = std::filesystem::path(path).parent_path() /
+                                                    (unitCompanionStem(model->name, role) + ".vxl");
+            if (!std::filesystem::exists(companion)) continue;
+            if (model->unit.empty()) model->unit.push_back({UnitRole::Body, model->name, model->vxl, model->hva});
+            UnitFile file{role, companion.filename().string(), {}, {}};
+            const std::vector<uint8_t> b = readFileBytes(companion.string());
+            file.model = readVxl(b.data(), b.size());
+            const std::filesystem::path h = std::filesystem::path(companion).replace_extension(".hva");
+            if (std::filesystem::exists(h)) {
+                const std::vector<uint8_t> hb = readFileBytes(h.string());
+                file.hva = readHva(hb.data(), hb.size());
+            }
+            model->unit.push_back(std::move(file));
+        }
+    }
+    if (!model->unit.empty()) {
+        UnitSceneOptions unitOptions;
+        unitOptions.vxl = options;
+        for (const PlacedVolume &part : unitScene(model->unit, unitOptions).scene.parts)
+            model->toDisplay.push_back(part.toModel);
+        unitOptions.vxl.applyTransforms = false;
+        model->scene = unitScene(model->unit, unitOptions).scene;
+        return model;
+    }
     for (const PlacedVolume &part : vxlScene(model->vxl, hva, options).parts)
         model->toDisplay.push_back(part.toModel);
     options.applyTransforms = false;
