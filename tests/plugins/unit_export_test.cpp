@@ -5,6 +5,7 @@
 #include "meshlab_run.h"
 #include "ply_reader.h"
 
+#include "fixtures/vox_writer.h"
 #include "fixtures/vxl_fixtures.h"
 #include "formats/file_bytes.h"
 #include "formats/hva.h"
@@ -188,5 +189,40 @@ TEST(GlbExport, EverySharedModelIsValidWithItsNodesAndAnimations) {
     const tinygltf::Model robo = loadGlb(dir + "/robo.glb");
     EXPECT_NE(findNode(robo, "Head_Upper"), nullptr);
     EXPECT_EQ(robo.nodes.size(), 3u);
+    fs::remove_all(dir);
+}
+
+TEST(GlbExport, KeyframedVoxScenesBecomeValidAnimations) {
+    // MagicaVoxel transform keyframes, written from code (no shared .vox is animated): two named
+    // shapes, one moving over 4 frames, one turning; the .glb animates both nodes.
+    using namespace voxelfair::fixtures;
+    std::vector<VoxDict> moves, turns;
+    for (int f = 0; f < 4; ++f) {
+        moves.push_back({{"_f", std::to_string(f)}, {"_t", std::to_string(3 * f) + " 0 " + std::to_string(f)}});
+        turns.push_back({{"_f", std::to_string(f)}, {"_r", f % 2 ? "17" : "4"}, {"_t", "0 20 0"}});
+    }
+    std::vector<VoxVoxel> block;
+    for (uint8_t x = 0; x < 4; ++x)
+        for (uint8_t z = 0; z < 3; ++z) block.push_back({x, 0, z, uint8_t(1 + x)});
+    const Bytes bytes = VoxWriter()
+                            .model(4, 1, 3, block)
+                            .transform(0, 1, {{}})
+                            .group(1, {2, 4})
+                            .transform(2, 3, moves, {{"_name", "mover"}})
+                            .shape(3, 0)
+                            .transform(4, 5, turns, {{"_name", "turner"}})
+                            .shape(5, 0)
+                            .bytes();
+    const std::string dir = makeTempDir();
+    writeFile(dir + "/keys.vox", bytes);
+    const MeshlabRun run = runMeshlabServer({"-i", dir + "/keys.vox", "-o", dir + "/keys.glb"});
+    ASSERT_TRUE(fs::exists(dir + "/keys.glb")) << run.output;
+    expectValid({dir + "/keys.glb"});
+    const tinygltf::Model model = loadGlb(dir + "/keys.glb");
+    ASSERT_EQ(model.animations.size(), 1u);
+    EXPECT_EQ(model.animations[0].channels.size(), 6u);  // 2 nodes x translation, rotation, scale
+    EXPECT_EQ(model.accessors[size_t(model.animations[0].samplers[0].input)].count, 4u);
+    EXPECT_NE(findNode(model, "mover"), nullptr);
+    EXPECT_NE(findNode(model, "turner"), nullptr);
     fs::remove_all(dir);
 }
