@@ -9,7 +9,6 @@
 #include <limits>
 #include <sstream>
 #include <stdexcept>
-#include <unordered_map>
 
 #define GLM_ENABLE_EXPERIMENTAL
 #include <glm/gtc/quaternion.hpp>
@@ -46,16 +45,6 @@ struct CornerKey {
     }
 };
 
-struct CornerHash {
-    size_t operator()(const CornerKey &k) const {
-        uint32_t bits[6];
-        std::memcpy(bits, &k.uv, 8);
-        std::memcpy(bits + 2, &k.colour, 16);
-        size_t h = k.vertex * 0x9E3779B97F4A7C15ull;
-        for (uint32_t b : bits) h = (h ^ b) * 0x100000001B3ull;
-        return h;
-    }
-};
 
 void check(bool ok, const std::string &problem) {
     if (!ok) throw std::invalid_argument("glb writer: " + problem);
@@ -137,30 +126,49 @@ Trs decompose(const glm::mat4 &m) {
 std::vector<double> toDoubles(const float *p, int n) { return std::vector<double>(p, p + n); }
 
 // Splits the mesh by node and welds each node's corners; positions and normals go to the node's
-// frame in glTF axes: p_local = C * world^-1 * p_model (C = axes * metresPerVoxel).
+// frame in glTF axes: p_local = C * world^-1 * p_model (C = axes * metresPerVoxel). The corners
+// met so far at a (node, vertex) are chained from that vertex's slot: a vertex has a handful of
+// distinct UVs at most, so a short walk replaces a hash of every corner.
 std::vector<NodeMesh> splitByNode(const GlbMesh &mesh, const std::vector<glm::mat4> &modelToLocal,
                                   const std::vector<glm::mat3> &normalToLocal) {
+    constexpr uint32_t kNone = ~uint32_t(0);
+    struct Seen {
+        CornerKey key;
+        uint32_t index, next;
+    };
     const size_t triangles = mesh.triangles.size() / 3;
     std::vector<NodeMesh> nodes(modelToLocal.size());
-    std::vector<std::unordered_map<CornerKey, uint32_t, CornerHash>> welded(modelToLocal.size());
+    std::vector<std::vector<uint32_t>> first(modelToLocal.size());  // per node, per model vertex
+    std::vector<Seen> seen;
+    seen.reserve(mesh.positions.size() + mesh.positions.size() / 2);
     const bool hasUv = !mesh.cornerUvs.empty(), hasColour = !mesh.cornerColours.empty(),
                hasNormal = !mesh.normals.empty();
     for (size_t t = 0; t < triangles; ++t) {
         const size_t node = mesh.triangleNodes.empty() ? 0 : size_t(mesh.triangleNodes[t]);
         NodeMesh &out = nodes[node];
+        std::vector<uint32_t> &heads = first[node];
+        if (heads.empty()) heads.assign(mesh.positions.size(), kNone);
         for (int c = 0; c < 3; ++c) {
             const size_t corner = 3 * t + size_t(c);
-            CornerKey key{mesh.triangles[corner], hasUv ? mesh.cornerUvs[corner] : glm::vec2(0.0f),
-                          hasColour ? mesh.cornerColours[corner] : glm::vec4(0.0f)};
-            const auto [it, inserted] = welded[node].emplace(key, uint32_t(out.positions.size()));
-            if (inserted) {
+            const CornerKey key{mesh.triangles[corner], hasUv ? mesh.cornerUvs[corner] : glm::vec2(0.0f),
+                                hasColour ? mesh.cornerColours[corner] : glm::vec4(0.0f)};
+            uint32_t found = kNone;
+            for (uint32_t s = heads[key.vertex]; s != kNone; s = seen[s].next)
+                if (seen[s].key == key) {
+                    found = seen[s].index;
+                    break;
+                }
+            if (found == kNone) {
+                found = uint32_t(out.positions.size());
+                seen.push_back({key, found, heads[key.vertex]});
+                heads[key.vertex] = uint32_t(seen.size() - 1);
                 out.positions.push_back(glm::vec3(modelToLocal[node] * glm::vec4(mesh.positions[key.vertex], 1.0f)));
                 if (hasNormal)
                     out.normals.push_back(unitOr(normalToLocal[node] * mesh.normals[key.vertex], glm::vec3(0, 1, 0)));
                 if (hasUv) out.uvs.push_back(glm::vec2(key.uv.x, 1.0f - key.uv.y));
                 if (hasColour) out.colours.push_back(key.colour);
             }
-            out.indices.push_back(it->second);
+            out.indices.push_back(found);
         }
     }
     return nodes;

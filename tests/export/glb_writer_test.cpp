@@ -197,3 +197,31 @@ TEST(GlbWriter, InconsistentInputIsRefused) {
     mesh.triangleNodes.clear();
     EXPECT_NO_THROW(writeGlb(mesh, {}, nullptr));
 }
+
+TEST(GlbWriter, CornersWeldUnlessTheirUvsDiffer) {
+    // A random n x n grid of quads: every corner of a vertex has the same UV except along one
+    // seam column, whose vertices get a second UV on the right-hand quads.
+    std::mt19937 rng(31);
+    for (int trial = 0; trial < 10; ++trial) {
+        const int n = 2 + int(rng() % 12), seam = 1 + int(rng() % unsigned(n - 1));
+        GlbMesh mesh;
+        for (int y = 0; y <= n; ++y)
+            for (int x = 0; x <= n; ++x) mesh.positions.push_back(glm::vec3(x, y, 0));
+        const auto at = [&](int x, int y) { return uint32_t(y * (n + 1) + x); };
+        const auto uv = [&](int x, int y, int quadX) {
+            return glm::vec2(float(x) / float(n) + (x == seam && quadX >= seam ? 0.5f : 0.0f), float(y) / float(n));
+        };
+        for (int y = 0; y < n; ++y)
+            for (int x = 0; x < n; ++x) {
+                const int corners[6][2] = {{x, y}, {x + 1, y}, {x + 1, y + 1}, {x, y}, {x + 1, y + 1}, {x, y + 1}};
+                for (const auto &c : corners) {
+                    mesh.triangles.push_back(at(c[0], c[1]));
+                    mesh.cornerUvs.push_back(uv(c[0], c[1], x));
+                }
+            }
+        const tinygltf::Model model = load(writeGlb(mesh, {}, nullptr));
+        const tinygltf::Primitive &p = model.meshes[0].primitives[0];
+        EXPECT_EQ(model.accessors[size_t(p.attributes.at("POSITION"))].count, size_t((n + 1) * (n + 1) + n + 1));
+        EXPECT_EQ(model.accessors[size_t(p.indices)].count, size_t(6 * n * n));
+    }
+}
