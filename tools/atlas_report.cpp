@@ -56,6 +56,7 @@ void writePpm(const std::string &path, const AtlasTexture &t) {
 int gutter = PackOptions().gutter;
 bool noFill = false, square = false;
 const char *only = nullptr;  // --only NAME: one shared model
+float cone = ChartOptions().minSeedCosine;
 
 void report(const TestMesh &mesh, int textureSize, float texelsPerUnit, const char *ppmDir) {
     const AtlasMesh view = mesh.view();
@@ -169,6 +170,7 @@ void reportShared(const char *ppmDir) {
     options.pack.texelsPerUnit = 8.0f;  // the filter's default
     options.pack.fillTexture = !noFill;
     options.pack.allowWide = !square;
+    options.charts.minSeedCosine = cone;
     std::printf("\nShared models, chain at the filter's defaults (%g texels per voxel, max %d):\n", double(options.pack.texelsPerUnit), options.pack.maxTextureSize);
     std::printf("  %-14s %7s %6s %11s %8s %7s %6s %8s %7s %7s %6s %5s %8s\n", "model", "faces", "charts", "texture",
                 "texel/v", "cover%", "ctr%", "ch/kface", "near%", "bilin%", "sep", "over", "atlas ms");
@@ -235,6 +237,8 @@ int main(int argc, char **argv) {
             noFill = true;
         else if (!std::strcmp(argv[i], "--square"))
             square = true;
+        else if (!std::strcmp(argv[i], "--cone") && i + 1 < argc)
+            cone = float(std::atof(argv[++i]));
         else if (!std::strcmp(argv[i], "--only") && i + 1 < argc)
             only = argv[++i];
         else if (!std::strcmp(argv[i], "--ppm") && i + 1 < argc)
@@ -242,7 +246,7 @@ int main(int argc, char **argv) {
         else if (!std::strcmp(argv[i], "--gutter") && i + 1 < argc)
             gutter = std::atoi(argv[++i]);
         else {
-            std::fprintf(stderr, "usage: %s [--all] [--models] [--shared [--only NAME] [--no-fill] [--square]] [--ppm DIR] [--gutter N]\n", argv[0]);
+            std::fprintf(stderr, "usage: %s [--all] [--models] [--shared [--only NAME] [--no-fill] [--square] [--cone COS]] [--ppm DIR] [--gutter N]\n", argv[0]);
             return 2;
         }
     }

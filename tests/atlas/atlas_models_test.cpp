@@ -1,0 +1,163 @@
+// The atlas at the texture filter's defaults (8 texels per voxel, texture sized from the
+// density, 2:1 allowed, filled) through the whole chain (extraction, the paper's fairing,
+// attributes; tools/pipeline_stages.h): on every shared model and on generated families of pixel
+// art that make thin faces (thin plates, long diagonal slivers, many small parts, random
+// orientations and sizes, fixed seeds). Every interior sample of every face reads its voxel
+// colour (GL_NEAREST), no two charts share a texel, and the coverage is printed per model and
+// held to the floor measured when it was written.
+#include "atlas/atlas_measures.h"
+#include "atlas/texture_atlas.h"
+#include "pipeline_stages.h"
+#include "shapes/analytic_shapes.h"
+#include "shapes/shape_families.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <random>
+
+using namespace voxelfair;
+
+namespace {
+
+struct Outcome {
+    double coverage = 0;
+    double chartsPerKiloFace = 0;
+};
+
+// The chain at the filter's defaults; the atlas' guarantees asserted.
+Outcome checkModel(const pipeline::Model &model) {
+    SCOPED_TRACE(model.name);
+    pipeline::QuadMesh mesh = pipeline::extract(model.scene);
+    if (mesh.quadCount() == 0)
+        return {};
+    pipeline::fair(mesh);
+    const pipeline::Attributes a = pipeline::smoothAttributes(mesh);
+    const AtlasMesh view = pipeline::atlasMesh(mesh, a);
+    AtlasOptions options;
+    options.pack.texelsPerUnit = 8.0f;  // the texture filter's default
+    const TextureAtlas atlas = pipeline::buildAtlas(mesh, a, options);
+    EXPECT_EQ(atlas.status(), AtlasStatus::Ok) << atlas.message();
+    if (atlas.status() != AtlasStatus::Ok)
+        return {};
+    EXPECT_TRUE(atlas.crispGuaranteed);
+    const AtlasMeasures m = measureAtlas(view, atlas.charts, atlas.layout);
+    EXPECT_EQ(m.overlappingChartTexels, 0u);
+    EXPECT_EQ(m.overlappingCentres, 0u);
+    EXPECT_EQ(m.facesWithoutUvArea, 0u);
+    const ColourFidelity fid = measureColourFidelity(view, atlas.layout, atlas.texture);
+    EXPECT_EQ(fid.nearestMatches, fid.samples) << "interior samples that read another colour";
+    EXPECT_TRUE(atlas.layout.width == atlas.layout.height || atlas.layout.width == 2 * atlas.layout.height);
+    EXPECT_GE(atlas.layout.texelsPerUnit * mesh.voxelSize, 8.0 * 0.999);
+    Outcome o{m.packingEfficiency, 1000.0 * double(atlas.charts.chartCount()) / double(view.faceCount)};
+    std::printf("  %-22s %7zu faces %5zu charts (%6.1f/kface) %5dx%-5d %6.2f texels/voxel coverage %5.1f%% crisp "
+                "%zu/%zu, %zu separated\n",
+                model.name.c_str(), view.faceCount, atlas.charts.chartCount(), o.chartsPerKiloFace, atlas.layout.width,
+                atlas.layout.height, atlas.layout.texelsPerUnit * mesh.voxelSize, 100 * o.coverage,
+                fid.nearestMatches, fid.samples, atlas.charts.separatedFaces);
+    return o;
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0 : v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+// Pixel art: each voxel one of eight colours, by a hash of its position and the seed.
+std::function<Voxel(int, int, int)> pixelArt(uint32_t seed) {
+    return [seed](int x, int y, int z) {
+        uint32_t h = uint32_t(x) * 73856093u ^ uint32_t(y) * 19349663u ^ uint32_t(z) * 83492791u ^ seed * 2654435761u;
+        h ^= h >> 13;
+        h *= 0x5bd1e995u;
+        h ^= h >> 15;
+        return Voxel{uint8_t(1 + h % 8), 0};
+    };
+}
+
+Palette eightColours() {
+    Palette p;
+    for (int i = 1; i <= 8; ++i)
+        p.colours[size_t(i)] = {uint8_t(30 * i), uint8_t(255 - 25 * i), uint8_t((70 * i) % 256)};
+    return p;
+}
+
+}  // namespace
+
+TEST(AtlasModels, EverySharedModelIsCrispWithoutOverlaps) {
+    namespace fs = std::filesystem;
+    const std::string dir = VOXELFAIR_MODELS_DIR;
+    if (!fs::is_directory(dir + "/vxl"))
+        GTEST_SKIP() << "needs the shared models in " << dir;
+    std::vector<fs::path> files;
+    for (const char *sub : {"vxl", "vox"})
+        for (const fs::directory_entry &e : fs::directory_iterator(dir + "/" + sub))
+            if (e.path().extension() == ".vxl" || e.path().extension() == ".vox")
+                files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+    std::vector<double> coverage;
+    for (const fs::path &file : files) {
+        std::unique_ptr<pipeline::Model> model;
+        try {
+            model = file.extension() == ".vox" ? pipeline::loadVox(file.string())
+                                               : pipeline::loadVxl(file.string(), dir + "/pal");
+        } catch (const std::exception &e) {
+            std::printf("  %s: not read (%s)\n", file.filename().c_str(), e.what());
+            continue;
+        }
+        const Outcome o = checkModel(*model);
+        if (o.coverage > 0)
+            coverage.push_back(o.coverage);
+    }
+    ASSERT_GE(coverage.size(), 15u);
+    std::printf("coverage: median %.1f%%, lowest %.1f%% over %zu models\n", 100 * median(coverage),
+                100 * *std::min_element(coverage.begin(), coverage.end()), coverage.size());
+    // Measured 56.7% (2:1 textures, filled); 31.7% before. The goal, 70%, is not reached.
+    EXPECT_GE(median(coverage), 0.5);
+}
+
+TEST(AtlasModels, GeneratedFamiliesAreCrispWithoutOverlaps) {
+    std::mt19937_64 random(20261125);
+    const Palette palette = eightColours();
+    std::vector<double> coverage;
+    for (int i = 0; i < 3; ++i) {
+        // A thin plate (1 to 2 voxels) at a random orientation.
+        const glm::dvec3 half(shapes::uniformIn(random, 6, 14), shapes::uniformIn(random, 5, 12),
+                              shapes::uniformIn(random, 0.55, 1.1));
+        const shapes::Shape plate = shapes::atOffset(
+            shapes::orientedBox("plate", half, shapes::randomRotation(random)), shapes::randomFraction(random));
+        coverage.push_back(checkModel(*pipeline::volumeModel("thin plate " + std::to_string(i),
+                                                             shapes::voxelize(plate, pixelArt(uint32_t(i))), palette))
+                               .coverage);
+        // A long diagonal sliver: a thin capsule across the lattice.
+        const double radius = shapes::uniformIn(random, 0.6, 1.2), length = shapes::uniformIn(random, 20, 40);
+        const glm::dmat3 r = shapes::randomRotation(random);
+        const glm::dvec3 a = -0.5 * length * r[2], b = 0.5 * length * r[2];
+        shapes::Shape sliver;
+        sliver.name = "sliver";
+        sliver.sdf = [=](const glm::dvec3 &p) { return shapes::capsuleDistance(p, a, b, radius); };
+        sliver.boundsMin = glm::min(a, b) - radius;
+        sliver.boundsMax = glm::max(a, b) + radius;
+        sliver = shapes::atOffset(sliver, shapes::randomFraction(random));
+        coverage.push_back(checkModel(*pipeline::volumeModel("diagonal sliver " + std::to_string(i),
+                                                             shapes::voxelize(sliver, pixelArt(uint32_t(10 + i))),
+                                                             palette))
+                               .coverage);
+        // Many small parts: 40 spheres and boxes of 1 to 3 voxels, each its own part.
+        std::vector<VoxelVolume> parts;
+        for (int k = 0; k < 40; ++k) {
+            const double s = shapes::uniformIn(random, 0.8, 2.5);
+            const shapes::Shape part =
+                k % 2 ? shapes::atOffset(shapes::sphere(glm::dvec3(s + 1), s), shapes::randomFraction(random))
+                      : shapes::atOffset(shapes::orientedBox("box", glm::dvec3(s, 0.8 * s, 0.6 * s),
+                                                             shapes::randomRotation(random)),
+                                         shapes::randomFraction(random));
+            parts.push_back(shapes::voxelize(part, pixelArt(uint32_t(100 * i + k))));
+        }
+        coverage.push_back(checkModel(*pipeline::volumesModel("small parts " + std::to_string(i), std::move(parts),
+                                                              {}, palette))
+                               .coverage);
+    }
+    std::printf("coverage: median %.1f%% over %zu generated models\n", 100 * median(coverage), coverage.size());
+}
