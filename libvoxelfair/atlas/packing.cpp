@@ -68,7 +68,7 @@ Fit attempt(const AtlasCharts &charts, const PackOptions &o, double density, int
 // takes over when it falls outside.
 // The share of the texture the tight packer's charts (boxes, row spans) are first aimed at when
 // filling: it reaches 0.9 to 0.96 on voxel models' charts.
-constexpr double kFillAim = 0.95;
+constexpr double kFillAim = 0.92;
 
 bool densestFit(const AtlasCharts &charts, const PackOptions &o, int padding, int side, int height, double ceiling,
                 Packing &best, double &density, size_t &attempts, double known = 0, double knownFilled = 0) {

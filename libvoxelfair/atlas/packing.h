@@ -52,7 +52,7 @@ struct PackOptions {
     // Density mode: raise the density to fill the texture chosen (texelsPerUnit is then a
     // minimum), with at most this many more packings. Tight packing only.
     bool fillTexture = true;
-    int fillAttempts = 2;
+    int fillAttempts = 1;
     // Largest side when textureSize = 0, rounded down to a power of two, at most 16384.
     int maxTextureSize = 4096;
     // Empty texels kept between any two charts; charts also stay gutter/2 texels from the
