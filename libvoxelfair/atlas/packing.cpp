@@ -69,6 +69,8 @@ Fit attempt(const AtlasCharts &charts, const PackOptions &o, double density, int
 // The share of the texture the tight packer's charts (boxes, row spans) are first aimed at when
 // filling: it reaches 0.9 to 0.96 on voxel models' charts.
 constexpr double kFillAim = 0.92;
+// A fill that would raise the density by less than this is skipped (it costs a packing).
+constexpr double kLeastFillGain = 1.04;
 
 bool densestFit(const AtlasCharts &charts, const PackOptions &o, int padding, int side, int height, double ceiling,
                 Packing &best, double &density, size_t &attempts, double known = 0, double knownFilled = 0) {
@@ -92,6 +94,10 @@ bool densestFit(const AtlasCharts &charts, const PackOptions &o, int padding, in
     if (known > 0) {
         // Aim from the known fit: its room grows like the density squared.
         d = knownFilled > 0 ? known * std::sqrt(kFillAim / knownFilled) : miss * 0.85;
+        if (d < known * kLeastFillGain) {  // nearly full already: not worth a packing
+            density = known;
+            return true;
+        }
         d = std::clamp(d, known * 1.001, miss / 1.001);
     }
     Packing trial;
