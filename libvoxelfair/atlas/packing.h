@@ -14,8 +14,8 @@
 //     texture is the smallest power of two holding the charts at it, square or 2:1 (s x s/2,
 //     width the longer side, allowWide), at most maxTextureSize; then, with fillTexture, the
 //     density is raised to the largest that still fits that texture (at most fillAttempts more
-//     packings, aimed from the first one's room; skipped when it would gain under 4%), so the charts fill it instead of leaving up to three quarters
-//     empty after rounding. If even the largest texture is too small the density is lowered
+//     packings, aimed from the first one's room; skipped when it would gain under 4%), so the
+//     charts fill it instead of leaving up to three quarters empty after rounding. If even the largest texture is too small the density is lowered
 //     until the charts fit (densityReduced).
 //   * texture -> density (textureSize > 0): the side is fixed (textureHeight: a non-square one)
 //     and the density is the largest that fits (4 to 10 packings): the authors' fixed
