@@ -1,0 +1,75 @@
+// Tangent-space normal map baking, the "normal maps" of the paper's future work (section 6):
+// the shading of a source mesh (the undecimated faired surface) carried onto a target mesh (its
+// decimation) through the texture atlas both share.
+//
+// MeshLab's quadric decimation with texture keeps the atlas' UVs (texture coordinates are part of
+// its quadrics), so the target shows, at UV (u, v), the base colour of the source point with the
+// same UV. The source triangle under a target texel's UV is where the search for its source
+// point starts; the point itself is found by geometry: a walk over the source's triangles
+// (surface_walk.h: the projection onto the local sheet, or the closest facing point where the
+// target is well off the source). The source's interpolated vertex normal n there is what the
+// texel encodes. The target triangle under the texel gives the shading frame a glTF / Blender /
+// MikkTSpace pixel shader rebuilds there: N and T interpolated from the target's vertex normals
+// and MikkTSpace tangents (mikktspace.h) and normalised, B = w * cross(N, T). The texel stores
+// the unit solution of x T + y B + z N = n (the exact inverse of that shader), as (c + 1) / 2 in
+// RGB: +X along increasing u, +Y along increasing v (OpenGL / glTF / Blender convention: v up,
+// green up in the image).
+//
+// Coverage follows the base colour bake (atlas/bake.h): texel centres inside a target triangle
+// first, then texels a triangle merely overlaps; then `dilation` rings of texels around the
+// charts take the renormalised mean of their painted neighbours (the gutter). Texels no target
+// triangle touches keep the flat normal (0, 0, 1).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+namespace voxelfair {
+
+// A triangle mesh with per-vertex normals and per-corner UVs in [0, 1]^2, v up.
+struct NormalBakeMesh {
+    const glm::vec3 *positions = nullptr;
+    const glm::vec3 *normals = nullptr;  // per vertex, any non-zero length
+    size_t vertexCount = 0;
+    const uint32_t *triangles = nullptr;  // 3 per face
+    const glm::vec2 *wedgeUv = nullptr;   // 3 per face
+    size_t faceCount = 0;
+};
+
+struct NormalBakeOptions {
+    int size = 0;         // the atlas' side in texels (the base colour's)
+    int dilation = 2;     // gutter rings, as the base colour's (half the default gutter of 4)
+};
+
+struct NormalMap {
+    bool ok = false;
+    std::string message;  // why not, when !ok
+    int size = 0;
+    // size x size RGBA8, rows from the top (v = 1) down like AtlasTexture; alpha 255.
+    std::vector<uint8_t> rgba;
+    // The target's MikkTSpace tangents, 3 per face (xyz, w = bitangent sign): the frame the map
+    // was baked against, for exporters (glTF TANGENT).
+    std::vector<glm::vec4> cornerTangents;
+    size_t texelsBaked = 0;          // target texels given a source normal
+    size_t texelsWithoutSource = 0;  // target texels left flat (no source face near their UV, or no frame)
+};
+
+// Returns !ok with a message for empty or inconsistent input (null arrays, indices out of range,
+// size < 1).
+NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &target, const NormalBakeOptions &options);
+
+// The target's per-corner tangents alone (positions, normals and UVs per corner, as MikkTSpace
+// reads them).
+std::vector<glm::vec4> targetTangents(const NormalBakeMesh &target);
+
+// Decoding as a shader does: the texel's unit vector in the frame of a target point with
+// interpolated normal n and tangent t (w = sign); used by the tests and measures.
+glm::vec3 applyNormalMapTexel(glm::vec3 texel, glm::vec3 n, glm::vec4 t);
+
+}  // namespace voxelfair

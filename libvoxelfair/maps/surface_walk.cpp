@@ -1,0 +1,132 @@
+// Walking point location on a triangle surface; the contract is in surface_walk.h.
+#include "maps/surface_walk.h"
+
+#include "atlas/edge_adjacency.h"
+
+#include <algorithm>
+
+#include <glm/geometric.hpp>
+
+namespace voxelfair {
+
+SurfaceWalk::SurfaceWalk(const glm::vec3 *positions, const uint32_t *triangles, size_t faceCount, size_t vertexCount)
+    : frames_(faceCount), opposite_(buildEdgeAdjacency(triangles, faceCount, vertexCount).opposite),
+      positions_(positions), triangles_(triangles), faceNormals_(faceCount), nearPlane_(faceCount), vertexFaceStart_(vertexCount + 1, 0),
+      vertexFaces_(3 * faceCount) {
+    for (size_t c = 0; c < 3 * faceCount; ++c) ++vertexFaceStart_[triangles[c] + 1];
+    for (size_t v = 0; v < vertexCount; ++v) vertexFaceStart_[v + 1] += vertexFaceStart_[v];
+    {
+        std::vector<uint32_t> fill(vertexFaceStart_.begin(), vertexFaceStart_.end() - 1);
+        for (size_t c = 0; c < 3 * faceCount; ++c) vertexFaces_[fill[triangles[c]]++] = uint32_t(c / 3);
+    }
+    for (size_t f = 0; f < faceCount; ++f) {
+        const glm::vec3 a = positions[triangles[3 * f]], e1 = positions[triangles[3 * f + 1]] - a,
+                        e2 = positions[triangles[3 * f + 2]] - a;
+        // Dual basis of (e1, e2) in their plane: dot(dual1, e1) = 1, dot(dual1, e2) = 0, ...
+        const float d11 = glm::dot(e1, e1), d12 = glm::dot(e1, e2), d22 = glm::dot(e2, e2);
+        const float det = d11 * d22 - d12 * d12;
+        Frame &frame = frames_[f];
+        frame.origin = a;
+        const glm::vec3 n = glm::cross(e1, e2);
+        const float length = glm::length(n);
+        faceNormals_[f] = length > 0.0f ? n / length : n;
+        // A quarter of the longest edge, squared.
+        nearPlane_[f] = 0.0625f * std::max({d11, d22, glm::dot(e2 - e1, e2 - e1)});
+        if (det > 0.0f) {
+            frame.dual1 = (d22 * e1 - d12 * e2) / det;
+            frame.dual2 = (d11 * e2 - d12 * e1) / det;
+        } else {
+            frame.dual1 = frame.dual2 = glm::vec3(0.0f);  // no area: weights (1, 0, 0)
+        }
+    }
+}
+
+namespace {
+// Closest point of triangle abc to p as barycentric weights (Ericson 5.1.5).
+glm::vec3 closestWeights(const glm::vec3 &p, const glm::vec3 &a, const glm::vec3 &b, const glm::vec3 &c) {
+    const glm::vec3 ab = b - a, ac = c - a, ap = p - a;
+    const float d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
+    if (d1 <= 0 && d2 <= 0) return {1, 0, 0};
+    const glm::vec3 bp = p - b;
+    const float d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
+    if (d3 >= 0 && d4 <= d3) return {0, 1, 0};
+    const float vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+        const float v = d1 / (d1 - d3);
+        return {1 - v, v, 0};
+    }
+    const glm::vec3 cp = p - c;
+    const float d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
+    if (d6 >= 0 && d5 <= d6) return {0, 0, 1};
+    const float vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+        const float w = d2 / (d2 - d6);
+        return {1 - w, 0, w};
+    }
+    const float va = d3 * d6 - d5 * d4;
+    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
+        const float w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+        return {0, 1 - w, w};
+    }
+    const float sum = va + vb + vc;
+    if (!(sum > 0)) return {1, 0, 0};
+    const float v = vb / sum, w = vc / sum;
+    return {1 - v - w, v, w};
+}
+}  // namespace
+
+SurfaceWalk::Hit SurfaceWalk::project(const glm::vec3 &p, uint32_t start, const glm::vec3 &facing, int maxSteps) const {
+    uint32_t face = start, previous = UINT32_MAX;
+    glm::vec3 w(1.0f, 0.0f, 0.0f);
+    for (int step = 0;; ++step) {
+        const Frame &frame = frames_[face];
+        const glm::vec3 d = p - frame.origin;
+        const float w1 = glm::dot(d, frame.dual1), w2 = glm::dot(d, frame.dual2);
+        w = glm::vec3(1.0f - w1 - w2, w1, w2);
+        // The most negative weight's corner k faces the edge (k + 1, k + 2) = half-edge (k + 1) % 3.
+        int k = 0;
+        if (w[1] < w[k]) k = 1;
+        if (w[2] < w[k]) k = 2;
+        if (w[k] >= 0.0f || step >= maxSteps) break;
+        const uint32_t across = opposite_[3 * size_t(face) + size_t((k + 1) % 3)];
+        if (across == kNoOpposite || across / 3 == previous) break;  // border, or a ridge walked back and forth
+        previous = face;
+        face = across / 3;
+    }
+    // Inside, and near the plane compared with the triangle's size: the projection is the closest
+    // point, or close to it.
+    if (w.x >= 0.0f && w.y >= 0.0f && w.z >= 0.0f) {
+        const float height = glm::dot(p - frames_[face].origin, faceNormals_[face]);
+        if (height * height <= nearPlane_[face]) return {face, w};
+    }
+    // Off the source: the closest facing point around the last triangle, while it improves.
+    auto point = [&](uint32_t f, const glm::vec3 &weights) {
+        const uint32_t *t = &triangles_[3 * size_t(f)];
+        return weights.x * positions_[t[0]] + weights.y * positions_[t[1]] + weights.z * positions_[t[2]];
+    };
+    auto closest = [&](uint32_t f) {
+        const uint32_t *t = &triangles_[3 * size_t(f)];
+        return closestWeights(p, positions_[t[0]], positions_[t[1]], positions_[t[2]]);
+    };
+    Hit best{face, closest(face)};
+    glm::vec3 q = point(face, best.weights);
+    float bestDistance = glm::dot(q - p, q - p);
+    for (int round = 0; round < 16; ++round) {
+        const uint32_t centre = best.face;
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t v = triangles_[3 * size_t(centre) + size_t(k)];
+            for (uint32_t i = vertexFaceStart_[v]; i < vertexFaceStart_[v + 1]; ++i) {
+                const uint32_t f = vertexFaces_[i];
+                if (f == best.face || glm::dot(faceNormals_[f], facing) <= 0.0f) continue;
+                const glm::vec3 weights = closest(f);
+                q = point(f, weights);
+                const float d = glm::dot(q - p, q - p);
+                if (d < bestDistance) bestDistance = d, best = {f, weights};
+            }
+        }
+        if (best.face == centre) break;
+    }
+    return best;
+}
+
+}  // namespace voxelfair

@@ -1,0 +1,90 @@
+// Real faired meshes for the maps' tests, tools and benchmark: a shared model (or a volume) through
+// the paper's chain as the pipeline runs it (tools/pipeline_stages.h: extraction 4.2, fairing
+// 4.3, attributes 4.4, atlas 4.5), in model space (parts placed, as the importer places them),
+// with the 4.4 vertex normals and the atlas' UVs; then MeshLab's decimation with texture
+// (vcg_quadric_tex.h) when vcglib is there.
+#pragma once
+
+#include "../../tools/pipeline_stages.h"
+#include "maps/normal_bake.h"
+#include "maps/vcg_quadric_tex.h"
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace voxelfair::mapstest {
+
+struct FairedMesh {
+    std::string name;
+    std::vector<glm::vec3> positions, normals;
+    std::vector<uint32_t> triangles;
+    std::vector<glm::vec2> wedgeUv;
+    int textureSize = 0;
+    float voxelSize = 1.0f;
+    size_t faceCount() const { return triangles.size() / 3; }
+};
+
+// The model's faired, textured triangle mesh at `texelsPerVoxel`.
+inline FairedMesh fairedMesh(const pipeline::Model &model, float texelsPerVoxel) {
+    pipeline::QuadMesh mesh = pipeline::extract(model.scene);
+    pipeline::fair(mesh);
+    const pipeline::Attributes chain = pipeline::smoothAttributes(mesh);
+    FairedMesh out;
+    out.name = model.name;
+    out.positions = pipeline::displayPositions(mesh, model);
+    out.normals = pipeline::displayNormals(mesh, model, chain.vertexNormals);
+    out.triangles = chain.triangles;
+    // Placed parts may have other voxel sizes (HVA scales): the largest part's voxel is the unit.
+    std::vector<size_t> partQuads(model.toDisplay.size(), 0);
+    for (uint32_t part : mesh.quadPart) ++partQuads[part];
+    const size_t largest = size_t(std::max_element(partQuads.begin(), partQuads.end()) - partQuads.begin());
+    const float scale = std::cbrt(std::abs(glm::determinant(glm::mat3(model.toDisplay[largest]))));
+    pipeline::QuadMesh placed = mesh;
+    placed.positions = out.positions;
+    placed.voxelSize = mesh.voxelSize * (scale > 0.0f && std::isfinite(scale) ? scale : 1.0f);
+    out.voxelSize = placed.voxelSize;
+    AtlasOptions options;
+    options.pack.texelsPerUnit = texelsPerVoxel;
+    const TextureAtlas atlas = pipeline::buildAtlas(placed, chain, options);
+    out.wedgeUv = atlas.layout.wedgeUv;
+    out.textureSize = atlas.layout.size;
+    return out;
+}
+
+// Every shared model the readers accept (.vxl with its .hva and the game palettes, .vox);
+// `refused` collects "file: reason" for the others.
+inline std::vector<std::unique_ptr<pipeline::Model>> sharedModels(const std::filesystem::path &dir,
+                                                                  std::vector<std::string> *refused) {
+    std::vector<std::filesystem::path> files;
+    for (const char *sub : {"vxl", "vox"})
+        if (std::filesystem::is_directory(dir / sub))
+            for (const auto &entry : std::filesystem::directory_iterator(dir / sub))
+                if (entry.path().extension() == std::string(".") + sub) files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    std::vector<std::unique_ptr<pipeline::Model>> models;
+    for (const auto &file : files) {
+        try {
+            models.push_back(file.extension() == ".vxl" ? pipeline::loadVxl(file.string(), (dir / "pal").string())
+                                                        : pipeline::loadVox(file.string()));
+        } catch (const std::exception &e) {
+            if (refused) refused->push_back(file.filename().string() + ": " + e.what());
+        }
+    }
+    return models;
+}
+
+inline NormalBakeMesh bakeView(const std::vector<glm::vec3> &positions, const std::vector<glm::vec3> &normals,
+                               const std::vector<uint32_t> &triangles, const std::vector<glm::vec2> &wedgeUv) {
+    NormalBakeMesh m;
+    m.positions = positions.data();
+    m.normals = normals.data();
+    m.vertexCount = positions.size();
+    m.triangles = triangles.data();
+    m.wedgeUv = wedgeUv.data();
+    m.faceCount = triangles.size() / 3;
+    return m;
+}
+
+}  // namespace voxelfair::mapstest
