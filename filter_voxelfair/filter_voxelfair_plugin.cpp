@@ -5,7 +5,7 @@
 #include <new>
 
 FilterVoxelfairPlugin::FilterVoxelfairPlugin() {
-    typeList << FP_LANCZOS_FAIRING << FP_ATTRIBUTE_SMOOTHING << FP_TEXTURE_ATLAS;
+    typeList << FP_LANCZOS_FAIRING << FP_ATTRIBUTE_SMOOTHING << FP_TEXTURE_ATLAS << FP_NORMAL_MAP;
     for (FilterIDType id : types()) actionList << new QAction(filterName(id), this);
 }
 
@@ -14,6 +14,7 @@ QString FilterVoxelfairPlugin::filterName(FilterIDType filter) const {
     case FP_LANCZOS_FAIRING: return "Voxel Fairing: Modified Lanczos";
     case FP_ATTRIBUTE_SMOOTHING: return "Voxel Fairing: Attribute Smoothing";
     case FP_TEXTURE_ATLAS: return "Voxel Texture Atlas: Greedy Charts";
+    case FP_NORMAL_MAP: return "Voxel Texture: Bake Normal Map";
     }
     return QString();
 }
@@ -45,6 +46,15 @@ QString FilterVoxelfairPlugin::filterInfo(FilterIDType filter) const {
                "<b>Tight</b> packing fills the charts' shapes bottom-left (about 75% coverage); <b>paper</b> is the "
                "authors' guillotine merge of bounding boxes. Save the mesh in the texture's folder: the mesh refers "
                "to the texture by its file name.";
+    case FP_NORMAL_MAP:
+        return "Beyond the SBGames 2010 paper (its future work: normal maps): bakes the shading of the <b>source</b> "
+               "layer (the undecimated faired mesh) into a tangent-space normal map in the atlas of the <b>current</b> "
+               "layer (its decimation, which kept the atlas' texture coordinates), so a light mesh keeps the faired "
+               "surface's shading.<br>Workflow: Voxel Texture Atlas, <i>Duplicate Current layer</i>, decimate the copy "
+               "with <i>Quadric Edge Collapse Decimation (with texture)</i>, then this filter with the original layer "
+               "as source.<br>Tangents are MikkTSpace's (the convention of glTF, Blender, Unity, Unreal and Godot), "
+               "computed from the current layer's vertex normals and texture coordinates; green is +V (OpenGL / glTF "
+               "convention). The map is a PNG with a gutter like the base colour's.";
     }
     return QString();
 }
@@ -55,6 +65,7 @@ MeshFilterInterface::FilterClass FilterVoxelfairPlugin::getClass(QAction *action
     case FP_LANCZOS_FAIRING: return MeshFilterInterface::Smoothing;
     case FP_ATTRIBUTE_SMOOTHING: return FilterClass(MeshFilterInterface::Normal | MeshFilterInterface::VertexColoring);
     case FP_TEXTURE_ATLAS: return MeshFilterInterface::Texture;
+    case FP_NORMAL_MAP: return MeshFilterInterface::Texture;
     }
     return MeshFilterInterface::Smoothing;
 }
@@ -76,6 +87,7 @@ int FilterVoxelfairPlugin::postCondition(QAction *action) const {
         return MeshModel::MM_VERTNORMAL | MeshModel::MM_FACENORMAL | MeshModel::MM_VERTCOLOR | MeshModel::MM_FACEFLAG |
                MeshModel::MM_POLYGONAL;
     case FP_TEXTURE_ATLAS: return MeshModel::MM_WEDGTEXCOORD;
+    case FP_NORMAL_MAP: return MeshModel::MM_NONE;
     }
     return MeshModel::MM_ALL;
 }
@@ -145,6 +157,29 @@ void FilterVoxelfairPlugin::initParameterSet(QAction *action, MeshModel &m, Rich
     }
 }
 
+void FilterVoxelfairPlugin::initParameterSet(QAction *action, MeshDocument &md, RichParameterList &parameters) {
+    if (ID(action) != FP_NORMAL_MAP) {
+        if (md.mm() != nullptr) initParameterSet(action, *md.mm(), parameters);
+        return;
+    }
+    // The default source: the first other layer (the faired layer the current one was duplicated from).
+    MeshModel *source = nullptr;
+    for (MeshModel *m : md.meshList)
+        if (m != md.mm()) {
+            source = m;
+            break;
+        }
+    parameters.addParam(RichMesh("sourceMesh", source ? source : md.mm(), &md, "Source layer",
+                                 "The undecimated faired mesh whose shading is baked (the layer the current one was "
+                                 "duplicated from before decimating)."));
+    parameters.addParam(RichString("normalFile", md.mm() ? defaultNormalMapName(*md.mm()) : QString("voxelfair_normal.png"),
+                                   "Normal map file", "The PNG to write: a relative name is put beside the mesh's file."));
+    parameters.addParam(RichInt("textureSize", 0, "Texture size",
+                                "Side of the normal map in texels; 0 takes the base colour texture's (the atlas' layout)."));
+    parameters.addParam(RichInt("dilation", 2, "Gutter rings",
+                                "Rings of texels filled around the charts, as the base colour's (half its gutter)."));
+}
+
 void FilterVoxelfairPlugin::report(const QString &message) {
     Log(message.toStdString());
     std::fprintf(stderr, "filter_voxelfair: %s\n", message.toLocal8Bit().constData());
@@ -167,6 +202,7 @@ bool FilterVoxelfairPlugin::applyFilter(QAction *action, MeshDocument &md, const
         case FP_LANCZOS_FAIRING: return applyLanczosFairing(*m, parameters, cb);
         case FP_ATTRIBUTE_SMOOTHING: return applyAttributeSmoothing(*m, parameters, cb);
         case FP_TEXTURE_ATLAS: return applyTextureAtlas(*m, parameters, cb);
+        case FP_NORMAL_MAP: return applyNormalMap(md, parameters, cb);
         }
         return fail("unknown filter");
     } catch (const std::bad_alloc &) {

@@ -8,6 +8,8 @@
 
 // The texture file a mesh's atlas is written to by default: "<mesh name>_texture.png" beside it.
 QString defaultTextureName(const MeshModel &m);
+// The normal map a mesh's bake is written to by default: "NAME_normal.png" for "NAME_texture.png".
+QString defaultNormalMapName(const MeshModel &m);
 
 class FilterVoxelfairPlugin : public QObject, public MeshFilterInterface {
     Q_OBJECT
@@ -18,7 +20,8 @@ public:
     enum FilterId {
         FP_LANCZOS_FAIRING,    // section 4.3
         FP_ATTRIBUTE_SMOOTHING,  // section 4.4
-        FP_TEXTURE_ATLAS         // section 4.5
+        FP_TEXTURE_ATLAS,        // section 4.5
+        FP_NORMAL_MAP            // beyond the paper (its future work): tangent-space normal map
     };
 
     FilterVoxelfairPlugin();
@@ -32,6 +35,7 @@ public:
     int getRequirements(QAction *action) override;
     int postCondition(QAction *action) const override;
     void initParameterSet(QAction *action, MeshModel &m, RichParameterList &parameters) override;
+    void initParameterSet(QAction *action, MeshDocument &md, RichParameterList &parameters) override;
     bool applyFilter(QAction *action, MeshDocument &md, const RichParameterList &parameters,
                      vcg::CallBackPos *cb) override;
 
@@ -39,6 +43,7 @@ private:
     bool applyLanczosFairing(MeshModel &m, const RichParameterList &parameters, vcg::CallBackPos *cb);
     bool applyAttributeSmoothing(MeshModel &m, const RichParameterList &parameters, vcg::CallBackPos *cb);
     bool applyTextureAtlas(MeshModel &m, const RichParameterList &parameters, vcg::CallBackPos *cb);
+    bool applyNormalMap(MeshDocument &md, const RichParameterList &parameters, vcg::CallBackPos *cb);
 
     // Sets errorMessage, logs it and writes it to stderr (meshlabserver never prints errorMessage).
     bool fail(const QString &message);

@@ -7,9 +7,11 @@ INPUT is a model file or a folder (searched for *.vxl and *.vox). Each model goe
 meshlabserver with voxelfair's plugins:
 
   --mode full     (default) import, fairing (paper 4.3), attribute smoothing (4.4), texture atlas
-                  and baked PNG (4.5), MeshLab's quadric decimation with texture (4.6); writes
-                  NAME.ply, NAME.obj (+ NAME.obj.mtl) and NAME.glb (glTF 2.0, texture embedded,
-                  one node per part, animation) with NAME_texture.png beside them (--formats)
+                  and baked PNG (4.5), MeshLab's quadric decimation with texture (4.6) of a copy of
+                  the faired layer, and the faired layer's shading baked into the decimated mesh's
+                  tangent-space normal map (beyond the paper); writes NAME.ply, NAME.obj
+                  (+ NAME.obj.mtl naming both maps) and NAME.glb (glTF 2.0, texture embedded, one
+                  node per part, animation) with NAME_texture.png and NAME_normal.png beside them
   --mode import   the voxel surface only: NAME.ply with face colours and each face's section
   --mode compare  the same input through voxelfair's fairing (paper and constrained modes), through
                   MeshLab's Taubin, HC Laplacian and TwoStep Smooth, and (when the build has
@@ -182,8 +184,9 @@ def matte_mtl(path):
     path.write_text("\n".join(lines) + "\n")
 
 
-def pipeline_script(args, texture):
-    """The full-pipeline .mlx with this run's values; the decimation is left out at ratio 1."""
+def pipeline_script(args, texture, normal):
+    """The full-pipeline .mlx with this run's values; the decimation (and with it the layer copy and
+    the normal map) is left out at ratio 1."""
     text = (HERE / "voxelfair_pipeline.mlx").read_text()
     values = {
         "MODE": "1" if args.fairing == "constrained" else "0",
@@ -191,13 +194,27 @@ def pipeline_script(args, texture):
         "PACKING": "1" if args.packing == "paper" else "0",
         "TEXELS_PER_VOXEL": repr(args.texels_per_voxel),
         "COLOURS": "1" if args.colours == "smoothed" else "0",
-        "TEXTURE_FILE": str(texture), "DECIMATION": repr(args.decimate),
+        "TEXTURE_FILE": str(texture), "DECIMATION": repr(args.decimate), "NORMAL_FILE": str(normal),
     }
     for key, value in values.items():
         text = text.replace(f"@{key}@", value.replace("&", "&amp;").replace('"', "&quot;"))
+    if args.decimate >= 1.0 or args.no_normal_map:
+        text = text.replace(' <filter name="Duplicate Current layer"/>\n', "")
+        text = re.sub(r' <filter name="Voxel Texture: Bake Normal Map">.*?</filter>\n', "", text, flags=re.S)
     if args.decimate >= 1.0:
         text = re.sub(r' <filter name="Simplification:.*?</filter>\n', "", text, flags=re.S)
     return text
+
+
+def name_normal_map(mtl, normal):
+    """vcglib's OBJ writer knows one texture: the MTL gets the normal map too (map_Bump, which
+    Blender's and most importers read as a normal map, and norm, the PBR extension's name)."""
+    out = []
+    for line in mtl.read_text().splitlines():
+        out.append(line)
+        if line.strip().startswith("map_Kd"):
+            out += [f"map_Bump {normal.name}", f"norm {normal.name}"]
+    mtl.write_text("\n".join(out) + "\n")
 
 
 class Run:
@@ -274,9 +291,11 @@ def convert(model, args, run):
 
     ply, obj, glb = out / f"{name}.ply", out / f"{name}.obj", out / f"{name}.glb"
     texture = out / f"{name}_texture.png"
+    normal = out / f"{name}_normal.png"
+    with_normal = args.decimate < 1.0 and not args.no_normal_map
     with tempfile.TemporaryDirectory(prefix="voxelfair-script-") as tmp:
         script = Path(tmp) / "pipeline.mlx"
-        script.write_text(pipeline_script(args, texture))
+        script.write_text(pipeline_script(args, texture, normal))
         # Saved without face colours: the texture holds them now, and vcglib's OBJ writer would
         # otherwise make one material per face colour. The .glb is written by the same run: the
         # parts' node tree travels with the imported mesh through the filters.
@@ -284,18 +303,21 @@ def convert(model, args, run):
         if "glb" in args.formats:
             arguments += ["-o", str(glb), "-m", "wt", "vn"]
         code, output, _ = run(arguments + ["-s", str(script)])
-    check([ply, texture] + ([glb] if "glb" in args.formats else []), code, output)
-    details += [line.split(": ", 1)[1] for line in output.splitlines() if line.startswith("filter_voxelfair: Texture Atlas")]
+    check([ply, texture] + ([normal] if with_normal else []) + ([glb] if "glb" in args.formats else []), code, output)
+    details += [line.split(": ", 1)[1] for line in output.splitlines()
+                if line.startswith(("filter_voxelfair: Texture Atlas", "filter_voxelfair: Bake Normal Map"))]
     details += ["glTF " + line.split(": ", 2)[2] for line in output.splitlines() if line.startswith("io_gltf: ")]
     if "obj" in args.formats:
         code, output, _ = run(["-i", str(ply), "-o", str(obj), "-m", "wt", "vn"])
         check([obj, out / f"{name}.obj.mtl"], code, output)
         matte_mtl(out / f"{name}.obj.mtl")
+        if with_normal:
+            name_normal_map(out / f"{name}.obj.mtl", normal)
         if args.up_obj == "y":
             turn_obj(obj, to_y_up(model))
     if "ply" in args.formats and args.up_ply == "y":
         turn_ply(ply, to_y_up(model))
-    outputs = [ply, texture] + [out / f"{name}.{f}" for f in ("obj", "glb") if f in args.formats]
+    outputs = [ply, texture] + ([normal] if with_normal else []) + [out / f"{name}.{f}" for f in ("obj", "glb") if f in args.formats]
     if "ply" not in args.formats:
         ply.unlink()
         outputs.remove(ply)
@@ -332,6 +354,8 @@ def main():
     parser.add_argument("--colours", choices=("crisp", "smoothed"), default="crisp", help="texture colours (default crisp)")
     parser.add_argument("--decimate", type=float, default=0.5,
                         help="keep this share of the faces with MeshLab's quadric decimation (default 0.5; 1 = none)")
+    parser.add_argument("--no-normal-map", action="store_true",
+                        help="do not bake the faired mesh's shading into a normal map for the decimated mesh")
     parser.add_argument("--jobs", "-j", type=int, default=os.cpu_count() or 1, help="models converted at once")
     parser.add_argument("--timeout", type=int, default=600, help="seconds allowed per meshlabserver run")
     parser.add_argument("--build", help="voxelfair build folder holding runtime/ (default: ./build)")

@@ -45,11 +45,15 @@ class ConvertWrapper(unittest.TestCase):
         code, output = wrapper(self.work, "models/tank.vxl", "-o", "out")
         self.assertEqual(code, 0, output)
         out = self.work / "out"
-        for name in ("tank.ply", "tank.obj", "tank.obj.mtl", "tank_texture.png", "tank.glb"):
+        for name in ("tank.ply", "tank.obj", "tank.obj.mtl", "tank_texture.png", "tank_normal.png", "tank.glb"):
             self.assertTrue((out / name).is_file() and (out / name).stat().st_size > 0, f"{name} missing\n{output}")
         self.assertEqual((out / "tank_texture.png").read_bytes()[:8], b"\x89PNG\r\n\x1a\n")
         self.assertIn("comment TextureFile tank_texture.png", ply_header(out / "tank.ply"))
         self.assertIn("tank_texture.png", (out / "tank.obj.mtl").read_text())
+        # The decimated mesh's normal map, baked from the copy of the faired layer, named by the MTL.
+        self.assertEqual((out / "tank_normal.png").read_bytes()[:8], b"\x89PNG\r\n\x1a\n")
+        self.assertIn("map_Bump tank_normal.png", (out / "tank.obj.mtl").read_text())
+        self.assertIn("Bake Normal Map:", output)
         # Matte: no specular highlight.
         self.assertIn("Ks 0.000000 0.000000 0.000000", (out / "tank.obj.mtl").read_text())
         self.assertNotIn("Ks 1", (out / "tank.obj.mtl").read_text())
@@ -96,6 +100,13 @@ class ConvertWrapper(unittest.TestCase):
         self.assertEqual(code, 0, output)
         self.assertEqual(sorted(p.name for p in (self.work / "parts").iterdir()),
                          ["3tnk.ply", "3tnkbarl.ply", "3tnktur.ply", "tank.ply"], output)
+
+    def test_without_decimation_or_with_no_normal_map_no_normal_map_is_written(self):
+        for options in (["--decimate", "1"], ["--no-normal-map"]):
+            code, output = wrapper(self.work, "models/tank.vxl", "-o", "plain", "--formats", "obj", *options)
+            self.assertEqual(code, 0, output)
+            self.assertFalse((self.work / "plain" / "tank_normal.png").exists(), options)
+            self.assertNotIn("map_Bump", (self.work / "plain" / "tank.obj.mtl").read_text())
 
     def test_import_and_compare_modes(self):
         code, output = wrapper(self.work, "models", "-o", "imported", "--mode", "import")
