@@ -5,11 +5,15 @@
 
 #include "maps/normal_bake.h"
 
+#include "../io_vxl/scene_to_meshlab.h"
+
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFileInfo>
 #include <QImage>
 #include <QImageReader>
+
+#include <cmath>
 
 using namespace voxelfair;
 
@@ -68,6 +72,23 @@ QString besideMesh(const MeshModel &m, const QString &name) {
     return QDir::cleanPath(folder.absoluteFilePath(name));
 }
 
+// MeshLab's "Duplicate Current layer" copies faces and their quality but not user attributes: the
+// decimated copy loses io_vxl's parts (the node tree per mesh, the part per face) that io_gltf
+// writes one node per part from. Restored from the source layer it was duplicated from, and
+// from the face quality, where io_vxl writes each face's part too.
+bool restoreParts(MeshModel &target, MeshModel &source) {
+    const ExportScene *scene = findExportScene(source.cm);
+    if (scene == nullptr || findExportScene(target.cm) != nullptr) return false;
+    if (!target.hasDataMask(MeshModel::MM_FACEQUALITY)) return false;
+    storeExportScene(*scene, target.cm);
+    if (!vcg::tri::HasPerFaceAttribute(target.cm, kPartAttributeName)) {
+        auto part = vcg::tri::Allocator<CMeshO>::GetPerFaceAttribute<int>(target.cm, kPartAttributeName);
+        for (CFaceO &f : target.cm.face)
+            if (!f.IsD()) part[f] = int(std::lround(f.Q()));
+    }
+    return true;
+}
+
 }  // namespace
 
 QString defaultNormalMapName(const MeshModel &m) { return normalNameFor(m); }
@@ -124,6 +145,8 @@ bool FilterVoxelfairPlugin::applyNormalMap(MeshDocument &md, const RichParameter
     auto attribute = vcg::tri::Allocator<CMeshO>::GetPerMeshAttribute<std::string>(target.cm, "voxelfair_normal_map");
     attribute() = QFileInfo(path).fileName().toStdString();
 
+    if (restoreParts(target, *source))
+        report("Bake Normal Map: the parts of the source layer (nodes, each face's part) restored on the current layer");
     report(QString("Bake Normal Map: %1 texels from layer '%2' (%3 faces) onto %4 faces, %5 x %5 (size from %6), "
                    "MikkTSpace tangents, %7 gutter rings -> %8 in %9 ms")
                .arg(map.texelsBaked)
