@@ -239,34 +239,42 @@ struct Builder {
     void generateSpaces(std::vector<Space> &spaces) const {
         const float thresholdCos = float(std::cos(double(180.0f * float(M_PI) / 180.0f)));
         std::vector<std::vector<int>> subgroups;
-        std::vector<V3> subgroupTangent;
+        std::vector<V3> subgroupTangent, projectedS, projectedT;
         std::vector<int> members;
         for (size_t g = 0; g < groups.size(); ++g) {
             const Group &group = groups[g];
-            subgroups.clear();
-            subgroupTangent.clear();
+            size_t subgroupCount = 0;
+            // Every member's derivatives projected onto the group's vertex normal, once.
+            const V3 n = normal(group.vertex);
+            projectedS.resize(group.count);
+            projectedT.resize(group.count);
+            for (size_t j = 0; j < group.count; ++j) {
+                const Triangle &t = tris[size_t(groupFaces[group.first + j])];
+                projectedS[j] = projectNormalised(n, t.os);
+                projectedT[j] = projectNormalised(n, t.ot);
+            }
             for (size_t k = 0; k < group.count; ++k) {
                 const int f = groupFaces[group.first + k];
                 const Triangle &tri = tris[size_t(f)];
                 int index = 0;
                 while (index < 3 && tri.group[index] != int(g)) ++index;
-                const V3 n = normal(group.vertex);
-                const V3 os = projectNormalised(n, tri.os), ot = projectNormalised(n, tri.ot);
                 members.clear();
                 for (size_t j = 0; j < group.count; ++j) {
                     const int t = groupFaces[group.first + j];
-                    const Triangle &other = tris[size_t(t)];
-                    const V3 os2 = projectNormalised(n, other.os), ot2 = projectNormalised(n, other.ot);
-                    const bool any = ((tri.flags | other.flags) & GroupWithAny) != 0;
-                    if (any || t == f || (vdot(os, os2) > thresholdCos && vdot(ot, ot2) > thresholdCos))
+                    const bool any = ((tri.flags | tris[size_t(t)].flags) & GroupWithAny) != 0;
+                    if (any || t == f ||
+                        (vdot(projectedS[k], projectedS[j]) > thresholdCos && vdot(projectedT[k], projectedT[j]) > thresholdCos))
                         members.push_back(t);
                 }
                 std::sort(members.begin(), members.end());
                 size_t s = 0;
-                while (s < subgroups.size() && subgroups[s] != members) ++s;
-                if (s == subgroups.size()) {
-                    subgroups.push_back(members);
-                    subgroupTangent.push_back(evalTangent(members, group.vertex));
+                while (s < subgroupCount && subgroups[s] != members) ++s;
+                if (s == subgroupCount) {
+                    if (subgroups.size() <= s) subgroups.emplace_back();
+                    subgroups[s] = members;
+                    if (subgroupTangent.size() <= s) subgroupTangent.emplace_back();
+                    subgroupTangent[s] = evalTangent(members, group.vertex);
+                    ++subgroupCount;
                 }
                 Space &out = spaces[3 * size_t(tri.original) + size_t(index)];
                 out.os = subgroupTangent[s];
