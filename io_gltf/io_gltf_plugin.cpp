@@ -3,6 +3,7 @@
 #include "scene_to_meshlab.h"
 
 #include "export/glb_writer.h"
+#include "maps/normal_bake.h"
 
 #include <QBuffer>
 #include <QElapsedTimer>
@@ -175,6 +176,30 @@ bool IoGltfPlugin::save(const QString &, const QString &fileName, MeshModel &m, 
             report(QString("%1: texture %2 not found; exported without it").arg(fileName, QString::fromStdString(cm.textures[0])));
         }
 
+        // The normal map the Bake Normal Map filter wrote for this mesh, with the MikkTSpace
+        // tangents it was baked against (same positions, normals and UVs).
+        QString normalMapPath;
+        if (vcg::tri::HasPerMeshAttribute(cm, "voxelfair_normal_map") && wedgeUv && !mesh.normals.empty()) {
+            auto handle = vcg::tri::Allocator<CMeshO>::FindPerMeshAttribute<std::string>(cm, "voxelfair_normal_map");
+            const QString name =
+                vcg::tri::Allocator<CMeshO>::IsValidHandle(cm, handle) ? QString::fromStdString(handle()) : QString();
+            if (!name.isEmpty()) normalMapPath = findTexture(name, fileName, m);
+            if (!normalMapPath.isEmpty()) {
+                options.normalMap.png = pngBytes(normalMapPath);
+                options.normalMap.name = local(QFileInfo(normalMapPath).completeBaseName());
+                NormalBakeMesh view;
+                view.positions = mesh.positions.data();
+                view.normals = mesh.normals.data();
+                view.vertexCount = mesh.positions.size();
+                view.triangles = mesh.triangles.data();
+                view.wedgeUv = mesh.cornerUvs.data();
+                view.faceCount = mesh.triangles.size() / 3;
+                if (!options.normalMap.png.empty()) mesh.cornerTangents = targetTangents(view);
+            } else {
+                report(QString("%1: normal map %2 not found; exported without it").arg(fileName, name));
+            }
+        }
+
         if (cb) cb(50, "Writing glTF");
         const std::vector<uint8_t> bytes =
             writeGlb(mesh, hasParts ? *scene : ExportScene{}, texture.png.empty() ? nullptr : &texture, options);
@@ -192,6 +217,9 @@ bool IoGltfPlugin::save(const QString &, const QString &fileName, MeshModel &m, 
                    .arg(options.textureFilter == TextureFilter::Nearest ? "nearest" : "linear")
                    .arg(bytes.size())
                    .arg(timer.elapsed()));
+        if (!mesh.cornerTangents.empty())
+            report(QString("%1: normal map %2 embedded (normalTexture, MikkTSpace TANGENT)")
+                       .arg(QFileInfo(fileName).fileName(), QFileInfo(normalMapPath).fileName()));
         if (unplaced > 0) report(QString("%1 faces had no part node and went to the first node").arg(unplaced));
         (void)mask;
         if (cb) cb(100, "Done");

@@ -31,6 +31,7 @@ constexpr int kClampToEdge = 33071;
 struct NodeMesh {
     std::vector<glm::vec3> positions, normals;
     std::vector<glm::vec2> uvs;
+    std::vector<glm::vec4> tangents;
     std::vector<glm::vec4> colours;
     std::vector<uint32_t> indices;
 };
@@ -39,9 +40,10 @@ struct CornerKey {
     uint32_t vertex;
     glm::vec2 uv;
     glm::vec4 colour;
+    glm::vec4 tangent;
     bool operator==(const CornerKey &o) const {
         return vertex == o.vertex && std::memcmp(&uv, &o.uv, sizeof uv) == 0 &&
-               std::memcmp(&colour, &o.colour, sizeof colour) == 0;
+               std::memcmp(&colour, &o.colour, sizeof colour) == 0 && std::memcmp(&tangent, &o.tangent, sizeof tangent) == 0;
     }
 };
 
@@ -142,7 +144,7 @@ std::vector<NodeMesh> splitByNode(const GlbMesh &mesh, const std::vector<glm::ma
     std::vector<Seen> seen;
     seen.reserve(mesh.positions.size() + mesh.positions.size() / 2);
     const bool hasUv = !mesh.cornerUvs.empty(), hasColour = !mesh.cornerColours.empty(),
-               hasNormal = !mesh.normals.empty();
+               hasNormal = !mesh.normals.empty(), hasTangent = !mesh.cornerTangents.empty();
     for (size_t t = 0; t < triangles; ++t) {
         const size_t node = mesh.triangleNodes.empty() ? 0 : size_t(mesh.triangleNodes[t]);
         NodeMesh &out = nodes[node];
@@ -151,7 +153,8 @@ std::vector<NodeMesh> splitByNode(const GlbMesh &mesh, const std::vector<glm::ma
         for (int c = 0; c < 3; ++c) {
             const size_t corner = 3 * t + size_t(c);
             const CornerKey key{mesh.triangles[corner], hasUv ? mesh.cornerUvs[corner] : glm::vec2(0.0f),
-                                hasColour ? mesh.cornerColours[corner] : glm::vec4(0.0f)};
+                                hasColour ? mesh.cornerColours[corner] : glm::vec4(0.0f),
+                                hasTangent ? mesh.cornerTangents[corner] : glm::vec4(0.0f)};
             uint32_t found = kNone;
             for (uint32_t s = heads[key.vertex]; s != kNone; s = seen[s].next)
                 if (seen[s].key == key) {
@@ -167,6 +170,13 @@ std::vector<NodeMesh> splitByNode(const GlbMesh &mesh, const std::vector<glm::ma
                     out.normals.push_back(unitOr(normalToLocal[node] * mesh.normals[key.vertex], glm::vec3(0, 1, 0)));
                 if (hasUv) out.uvs.push_back(glm::vec2(key.uv.x, 1.0f - key.uv.y));
                 if (hasColour) out.colours.push_back(key.colour);
+                if (hasTangent) {
+                    // A surface direction: the frame's linear part; a mirroring frame flips the handedness.
+                    const glm::mat3 linear(modelToLocal[node]);
+                    const glm::vec3 t = unitOr(linear * glm::vec3(key.tangent), glm::vec3(1, 0, 0));
+                    const float w = (key.tangent.w < 0.0f ? -1.0f : 1.0f) * (glm::determinant(linear) < 0.0f ? -1.0f : 1.0f);
+                    out.tangents.emplace_back(t, w);
+                }
             }
             out.indices.push_back(found);
         }
@@ -191,6 +201,9 @@ void checkInput(const GlbMesh &mesh, const ExportScene &scene, size_t nodeCount)
     for (uint32_t v : mesh.triangles) check(v < mesh.positions.size(), "a triangle index is past the vertices");
     check(mesh.normals.empty() || mesh.normals.size() == mesh.positions.size(), "normals are not one per vertex");
     check(mesh.cornerUvs.empty() || mesh.cornerUvs.size() == 3 * triangles, "UVs are not three per triangle");
+    check(mesh.cornerTangents.empty() || mesh.cornerTangents.size() == 3 * triangles,
+          "tangents are not three per triangle");
+    check(mesh.cornerTangents.empty() || !mesh.cornerUvs.empty(), "tangents without texture coordinates");
     check(mesh.cornerColours.empty() || mesh.cornerColours.size() == 3 * triangles,
           "colours are not three per triangle");
     check(mesh.triangleNodes.empty() || mesh.triangleNodes.size() == triangles, "triangle nodes are not one each");
@@ -273,6 +286,24 @@ std::vector<uint8_t> writeGlb(const GlbMesh &mesh, const ExportScene &inputScene
             model.textures.push_back(t);
             m.pbrMetallicRoughness.baseColorTexture.index = 0;
         }
+        if (!options.normalMap.png.empty() && !mesh.cornerUvs.empty()) {
+            // The tangent-space normal map: its own, linear sampler (a normal field, not pixel art).
+            tinygltf::Image image;
+            image.name = options.normalMap.name;
+            image.mimeType = "image/png";
+            image.bufferView = bin.view(options.normalMap.png.data(), options.normalMap.png.size(), 0);
+            model.images.push_back(image);
+            tinygltf::Sampler sampler;
+            sampler.magFilter = kLinear;
+            sampler.minFilter = kLinearMipmapLinear;
+            sampler.wrapS = sampler.wrapT = kClampToEdge;
+            model.samplers.push_back(sampler);
+            tinygltf::Texture t;
+            t.source = int(model.images.size() - 1);
+            t.sampler = int(model.samplers.size() - 1);
+            model.textures.push_back(t);
+            m.normalTexture.index = int(model.textures.size() - 1);
+        }
         model.materials.push_back(m);
         material = 0;
     }
@@ -305,6 +336,9 @@ std::vector<uint8_t> writeGlb(const GlbMesh &mesh, const ExportScene &inputScene
             if (!part.uvs.empty())
                 primitive.attributes["TEXCOORD_0"] =
                     bin.floats(&part.uvs[0].x, part.uvs.size(), 2, TINYGLTF_TYPE_VEC2, kArrayBuffer, false);
+            if (!part.tangents.empty() && !options.normalMap.png.empty())
+                primitive.attributes["TANGENT"] =
+                    bin.floats(&part.tangents[0].x, part.tangents.size(), 4, TINYGLTF_TYPE_VEC4, kArrayBuffer, false);
             if (!part.colours.empty())
                 primitive.attributes["COLOR_0"] =
                     bin.floats(&part.colours[0].x, part.colours.size(), 4, TINYGLTF_TYPE_VEC4, kArrayBuffer, false);

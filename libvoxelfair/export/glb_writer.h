@@ -17,6 +17,11 @@
 //    metallicFactor 0, roughnessFactor `roughness`; sampler magFilter NEAREST (9728) with
 //    minFilter NEAREST_MIPMAP_LINEAR (9986) for pixel art, or LINEAR / LINEAR_MIPMAP_LINEAR;
 //    CLAMP_TO_EDGE.
+//  - Normal map (when GlbOptions::normalMap has a PNG): material normalTexture with its own
+//    LINEAR / LINEAR_MIPMAP_LINEAR sampler, and per-vertex TANGENT (xyz unit, w the bitangent sign)
+//    from GlbMesh::cornerTangents: the MikkTSpace frame the map was baked against (maps/), computed
+//    with v up, so the map's green is +V as glTF's normalTexture expects; corners split where their
+//    tangents differ.
 //
 // The options struct is the place for later additions (normal maps, tangents, more textures):
 // each new field gets a default that leaves today's output unchanged.
@@ -37,6 +42,12 @@ namespace voxelfair {
 
 enum class TextureFilter { Nearest, Linear };
 
+// An encoded PNG, embedded as it is.
+struct GlbTexture {
+    std::vector<uint8_t> png;
+    std::string name;
+};
+
 struct GlbOptions {
     // Size of one voxel (one model unit) in metres. 0.1: a 30-voxel C&C tank is 3 m long, a
     // 126-voxel MagicaVoxel character 12.6 m tall; engines import it at that size.
@@ -46,6 +57,7 @@ struct GlbOptions {
     float roughness = 0.9f;  // matte: no plastic shine
     std::string name = "voxelfair";  // the scene's and the single node's name
     std::string generator = "voxelfair";
+    GlbTexture normalMap;  // empty: no normalTexture, no TANGENT
 };
 
 // A triangle mesh in model space; the corner arrays hold 3 entries per triangle.
@@ -55,14 +67,10 @@ struct GlbMesh {
     std::vector<uint32_t> triangles;      // 3 vertex indices per triangle, counter-clockwise
     std::vector<glm::vec2> cornerUvs;     // empty: no TEXCOORD_0; (0,0) is the image's bottom left
     std::vector<glm::vec4> cornerColours; // empty: no COLOR_0; linear RGBA in [0, 1]
+    std::vector<glm::vec4> cornerTangents; // empty: no TANGENT; model frame, w = bitangent sign
     std::vector<int> triangleNodes;       // index into ExportScene::nodes per triangle; empty: node 0
 };
 
-// An encoded PNG, embedded as it is.
-struct GlbTexture {
-    std::vector<uint8_t> png;
-    std::string name;
-};
 
 // Throws std::invalid_argument for inconsistent input (sizes, indices, node numbers, a node
 // whose parent does not come before it) and std::runtime_error when tinygltf cannot write.

@@ -2,8 +2,9 @@
 """Blender as the real client of our .glb: the wrapper converts the shared 3tnk unit (full
 pipeline: faired, textured, decimated), then Debian's Blender imports it headless and checks:
 it stands upright (height along Blender's z, the turret above the hull, the barrel pointing to the
-front), one object per part (body, turret, barrel and a mesh object per section), and the texture
-is sampled with interpolation 'Closest'.
+front), one object per part (body, turret, barrel and a mesh object per section), the base colour
+texture is sampled with interpolation 'Closest', and the normal map of the decimated mesh is wired
+into the material (image -> Normal Map node in tangent space -> the shader's Normal input).
 
 usage: blender_glb_test.py BUILD_DIR MODELS_DIR     (exit 77: skipped)
 """
@@ -37,10 +38,25 @@ def bounds(objs):
 def mesh_children(name):  # the part's own sections (the barrel hangs under the turret)
     return [o for o in objects[name].children if o.type == "MESH"] if name in objects else []
 
-interpolations = sorted({n.interpolation for m in bpy.data.materials if m.node_tree
-                         for n in m.node_tree.nodes if n.type == "TEX_IMAGE"})
+interpolations, normal_maps = set(), []
+for m in bpy.data.materials:
+    if not m.node_tree:
+        continue
+    for n in m.node_tree.nodes:
+        if n.type != "TEX_IMAGE":
+            continue
+        targets = [(l.to_node, l.to_socket.name) for out in n.outputs for l in out.links]
+        if any(node.type == "NORMAL_MAP" for node, _ in targets):
+            for node, _ in targets:
+                if node.type == "NORMAL_MAP":
+                    into = [(l.to_node.type, l.to_socket.name) for l in node.outputs[0].links]
+                    normal_maps.append({"image": n.image.name if n.image else None, "space": node.space,
+                                        "into": into, "colorspace": n.image.colorspace_settings.name if n.image else None})
+        else:
+            interpolations.add(n.interpolation)
+interpolations = sorted(interpolations)
 out = {"objects": sorted(objects), "meshes": sorted(o.name for o in objects.values() if o.type == "MESH"),
-       "interpolations": interpolations}
+       "interpolations": interpolations, "normal_maps": normal_maps}
 for part in ("body", "turret", "barrel"):
     objs = mesh_children(part)
     if objs:
@@ -63,7 +79,7 @@ def main():
     with tempfile.TemporaryDirectory(prefix="voxelfair-blender-") as tmp:
         tmp = Path(tmp)
         subprocess.run([sys.executable, str(WRAPPER), "--build", str(build), str(tank), "--output", str(tmp / "out"),
-                        "--formats", "glb"], check=True)
+                        "--formats", "glb", "--decimate", "0.1"], check=True)
         glb = tmp / "out" / "3tnk.glb"
         script, report = tmp / "check.py", tmp / "report.json"
         script.write_text(BLENDER_SCRIPT)
@@ -88,7 +104,10 @@ def main():
 
     expect({"body", "turret", "barrel"} <= set(r["objects"]), "one object per part: body, turret, barrel")
     expect(len(r["meshes"]) == 3, f"one mesh object per section (3 sections): {r['meshes']}")
-    expect(r["interpolations"] == ["Closest"], f"texture interpolation Closest: {r['interpolations']}")
+    expect(r["interpolations"] == ["Closest"], f"base colour interpolation Closest: {r['interpolations']}")
+    expect(len(r["normal_maps"]) > 0 and all(m["space"] == "TANGENT" and ("BSDF_PRINCIPLED", "Normal") in
+                                             [tuple(i) for i in m["into"]] for m in r["normal_maps"]),
+           f"the normal map feeds the shader's Normal through a tangent-space Normal Map node: {r['normal_maps']}")
     lo, hi = r["all"]
     size = [h - l for l, h in zip(lo, hi)]
     # Upright: the tank is longer (front along Blender's -y, glTF's +Z) than it is tall (z).

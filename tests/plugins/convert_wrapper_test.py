@@ -62,6 +62,12 @@ class ConvertWrapper(unittest.TestCase):
                                    capture_output=True, text=True)
         self.assertEqual(validator.returncode, 0, validator.stdout + validator.stderr)
         self.assertIn("0 errors, 0 warnings", validator.stdout)
+        # The decimated mesh's normal map and the MikkTSpace tangents it was baked against.
+        import json, struct
+        data = (out / "tank.glb").read_bytes()
+        gltf = json.loads(data[20:20 + struct.unpack("<I", data[12:16])[0]])
+        self.assertIn("normalTexture", gltf["materials"][0])
+        self.assertTrue(all("TANGENT" in p["attributes"] for m in gltf["meshes"] for p in m["primitives"]))
         # Nothing written beside the input model.
         self.assertEqual(sorted(p.name for p in self.inputs.iterdir()), self.before)
         self.assertIn("Texture Atlas:", output)
