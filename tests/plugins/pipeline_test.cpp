@@ -30,10 +30,15 @@ std::string pipelineScript(const std::string &dir, const std::string &texture, d
     std::string text((std::istreambuf_iterator<char>(in)), {});
     const std::pair<std::string, std::string> values[] = {
         {"@MODE@", "0"}, {"@LAMBDA@", "1.3333334"}, {"@PASSES@", "1"}, {"@PACKING@", "0"}, {"@TEXELS_PER_VOXEL@", "8"},
-        {"@COLOURS@", "0"}, {"@TEXTURE_FILE@", texture}, {"@DECIMATION@", std::to_string(decimation)}};
+        {"@COLOURS@", "0"}, {"@TEXTURE_FILE@", texture}, {"@DECIMATION@", std::to_string(decimation)},
+        {"@NORMAL_FILE@", dir + "/normal.png"}};
     for (const auto &[key, value] : values)
         for (size_t at; (at = text.find(key)) != std::string::npos;) text.replace(at, key.size(), value);
-    if (decimation >= 1.0) text = std::regex_replace(text, std::regex(" <filter name=\"Simplification:[^]*?</filter>\n"), "");
+    // Without decimation, no layer copy and no normal map either (as the wrapper does).
+    if (decimation >= 1.0)
+        for (const char *filter : {" <filter name=\"Simplification:[^]*?</filter>\n", " <filter name=\"Duplicate Current layer\"/>\n",
+                                   " <filter name=\"Voxel Texture: Bake Normal Map\">[^]*?</filter>\n"})
+            text = std::regex_replace(text, std::regex(filter), "");
     const std::string path = dir + "/pipeline.mlx";
     std::ofstream(path) << text;
     return path;
