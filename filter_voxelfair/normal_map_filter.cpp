@@ -13,6 +13,7 @@
 #include <QImage>
 #include <QImageReader>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace voxelfair;
@@ -120,10 +121,12 @@ bool FilterVoxelfairPlugin::applyNormalMap(MeshDocument &md, const RichParameter
         QString texture = QFileInfo(name).isAbsolute() ? name : QFileInfo(path).absoluteDir().absoluteFilePath(name);
         if (!QFileInfo::exists(texture)) texture = besideMesh(target, name);
         const QSize imageSize = QImageReader(texture).size();
-        if (!imageSize.isValid() || imageSize.width() != imageSize.height())
+        if (!imageSize.isValid())
             return fail(QString("Bake Normal Map: could not read the size of the base colour texture %1; give the texture size")
                             .arg(texture));
-        size = imageSize.width();
+        // A wide atlas (2:1) gets a square map at its longer side: UVs are normalised per axis, so
+        // the layout is the same, with more texels along v.
+        size = std::max(imageSize.width(), imageSize.height());
         sizeFrom = QFileInfo(texture).fileName();
     }
 
