@@ -6,7 +6,7 @@
 // steps), which leaves the staircase ripples that make the greedy charts' micro partitions;
 // "Taubin4" keeps more of them (~9.5k charts instead of ~3.4k).
 #include "atlas/atlas_measures.h"
-#include "atlas/atlas_test_meshes.h"
+#include "shapes/atlas_test_meshes.h"
 #include "atlas/texture_atlas.h"
 
 #include <benchmark/benchmark.h>

@@ -2,7 +2,7 @@
 // voxel sphere of radius 70, ~185k triangles (the paper's largest model), with its atlas's
 // per-corner UVs, smooth vertex normals and a 1 MB texture, as one node and split over 12 part
 // nodes (each with 8 animation frames). Counters: triangles, bytes written, MB/s.
-#include "atlas/atlas_test_meshes.h"
+#include "shapes/atlas_test_meshes.h"
 #include "atlas/texture_atlas.h"
 #include "export/glb_writer.h"
 

@@ -1,7 +1,7 @@
 // Section 4.2 mesh extraction (cavity fill + manifold boundary quads). Target: a 64k-voxel
 // section in at most 20 ms.
 #include "extraction/boundary_surface.h"
-#include "extraction/dense_grid.h"
+#include "shapes/dense_grid.h"
 #include "formats/file_bytes.h"
 #include "formats/vxl.h"
 

@@ -10,7 +10,7 @@
 #include "fairing/constrained_fairing.h"
 #include "fairing/lanczos_fairing.h"
 #include "fairing/polygon_adjacency.h"
-#include "fairing/vcg_taubin.h"
+#include "smoothers/vcg_taubin.h"
 #include "shapes/analytic_shapes.h"
 
 #include <benchmark/benchmark.h>
@@ -126,8 +126,8 @@ BENCHMARK(BM_VcgTaubin10)->Unit(benchmark::kMillisecond);
 double cpuMilliseconds() { return 1000.0 * double(std::clock()) / CLOCKS_PER_SEC; }
 
 // Arguments: the second mode's passes and positionSweeps (the first pair is its default). Its
-// time here reads about 1 ms higher than BM_FairConstrainedCall's: Taubin, run in between, leaves
-// the caches cold, and some of the work memory, given back to the system, is faulted in again.
+// time here reads higher than BM_FairConstrainedCall's: Taubin, run in between, leaves the caches
+// cold, and some of the work memory, given back to the system, is faulted in again.
 void BM_SpeedRatios(benchmark::State &state) {
     const SphereMesh &m = mesh();
     ConstrainedFairingOptions options;

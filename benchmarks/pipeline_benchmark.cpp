@@ -13,12 +13,12 @@
 //   Chain8TexelsPerVoxel/tank63k  the same at the filter's default density.
 //   Parse/<model>                 the .vxl/.hva bytes (already in memory) to a scene.
 //
-// VXL sections are meshed in their own voxel units, as the authors did (tools/pipeline_stages.h).
+// VXL sections are meshed in their own voxel units, as the authors did (testkit/pipeline/pipeline_stages.h).
 // Our models against the paper's rows, by size: truckc ~ Demo Truck (7893 opaque voxels), cc ~
 // Kirov (35841), legs ~ Yuri Head (42733), subapc (52095) and tank63k (synthetic) ~ Warhammer (63150).
-#include "../tools/pipeline_stages.h"
-#include "../tools/synthetic_tank.h"
-#include "fairing/vcg_taubin.h"
+#include "pipeline/pipeline_stages.h"
+#include "shapes/synthetic_tank.h"
+#include "smoothers/vcg_taubin.h"
 #include "shapes/analytic_shapes.h"
 
 #include <benchmark/benchmark.h>

@@ -1,5 +1,5 @@
 // MagicaVoxel import speed. Target (issue 7): a 160k-voxel model imported -- parsed, its volume
-// built and its scene made -- within 50 ms. The models are written by the tests' fixture writer:
+// built and its scene made -- within 50 ms. The models are written by the testkit's fixture writer:
 // the level-4 Menger sponge (81^3, exactly 160 000 voxels, like ephtracy's menger.vox) in the
 // file's usual order and shuffled, and a dense 100 x 100 x 16 box in random order. The shared
 // test-transform.vox (3 models, 20 instances) is measured too when the models folder is present.

@@ -7,7 +7,7 @@
 // a z offset up to the largest side), then one bit per voxel, x fastest, then y, then z; the bits
 // repeat when the input is shorter than the grid, so short inputs give periodic structures.
 #include "extraction/boundary_surface.h"
-#include "surface_checks.h"
+#include "checks/surface_checks.h"
 
 #include <algorithm>
 #include <array>

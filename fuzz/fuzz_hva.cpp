@@ -2,7 +2,7 @@
 // the same from the writer's bytes (names cut to 15 characters).
 #include "formats/format_error.h"
 #include "formats/hva.h"
-#include "surface_checks.h"
+#include "checks/surface_checks.h"
 
 #include <string>
 

@@ -2,7 +2,7 @@
 // applies to it, with the colour and range taken from the input too.
 #include "formats/format_error.h"
 #include "formats/palette.h"
-#include "surface_checks.h"
+#include "checks/surface_checks.h"
 
 #include <cstring>
 

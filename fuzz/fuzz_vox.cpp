@@ -3,7 +3,7 @@
 #include "formats/format_error.h"
 #include "formats/vox.h"
 #include "scene/vox_scene.h"
-#include "surface_checks.h"
+#include "checks/surface_checks.h"
 
 #include <algorithm>
 

@@ -1,11 +1,11 @@
 // Fuzzes the VXL reader, then what the importer does with an accepted file: the writer's bytes
 // must read back to the same model, and the placed sections must mesh to closed, consistently
 // oriented manifolds.
-#include "fixtures/vxl_fixtures.h"  // tests/fixtures: model comparison
+#include "fixtures/vxl_fixtures.h"
 #include "formats/format_error.h"
 #include "formats/vxl.h"
 #include "scene/vxl_scene.h"
-#include "surface_checks.h"
+#include "checks/surface_checks.h"
 
 using namespace voxelfair;
 using namespace voxelfair::fuzz;

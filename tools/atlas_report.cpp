@@ -4,7 +4,7 @@
 //
 //   atlas_report                  the reference mesh: Taubin-smoothed voxel sphere r 20, 1024^2
 //   atlas_report --all            also boxes, a torus, blobs, raw voxel spheres
-//   atlas_report --models         also real VXL models from ../shared/models (sections side by
+//   atlas_report --models         also real VXL models from VOXELFAIR_MODELS_DIR (sections side by
 //                                 side, boundary quads of section 4.2, Taubin-smoothed)
 //   atlas_report --shared         only every shared model (vxl/, vox/) through the whole chain at
 //                                 the atlas filter's defaults: coverage, charts per thousand faces,
@@ -13,16 +13,13 @@
 //   atlas_report --gutter N       texels between charts (default 4; the bake fills N/2 of them)
 #include "atlas/atlas_measures.h"
 #include "atlas/texture_atlas.h"
-#include "atlas/atlas_test_meshes.h"
-
-#ifdef VOXELFAIR_ATLAS_REPORT_MODELS
-#include "../tools/pipeline_stages.h"
+#include "pipeline/pipeline_stages.h"
 #include "extraction/boundary_surface.h"
 #include "formats/file_bytes.h"
 #include "formats/format_error.h"
 #include "formats/palette.h"
 #include "formats/vxl.h"
-#endif
+#include "shapes/atlas_test_meshes.h"
 
 #include <algorithm>
 #include <chrono>
@@ -108,7 +105,6 @@ void report(const TestMesh &mesh, int textureSize, float texelsPerUnit, const ch
     }
 }
 
-#ifdef VOXELFAIR_ATLAS_REPORT_MODELS
 // A VXL model as one mesh: each section's boundary quads (section 4.2), split along a-c, placed
 // side by side along x, coloured from the embedded palette (the Red Alert 2 unit palette when
 // the file's is all zeros), then smoothed like MeshLab's Taubin filter.
@@ -219,7 +215,6 @@ void reportShared(const char *ppmDir) {
                                              : 0.5 * (covers[covers.size() / 2 - 1] + covers[covers.size() / 2])),
                     100 * covers.front());
 }
-#endif
 
 }  // namespace
 
@@ -267,15 +262,10 @@ int main(int argc, char **argv) {
         report(smoothed(voxelSphere(70), 4), 0, 2, ppmDir);
     }
     if (shared) {
-#ifdef VOXELFAIR_ATLAS_REPORT_MODELS
         reportShared(ppmDir);
-#else
-        std::printf("\n--shared: built without the formats and extraction units\n");
-#endif
         return 0;
     }
     if (models) {
-#ifdef VOXELFAIR_ATLAS_REPORT_MODELS
         for (const char *name : {"3tnk", "jeep", "hmec", "subapc", "cc"}) {
             TestMesh mesh;
             if (loadVxl(name, mesh)) {
@@ -283,9 +273,6 @@ int main(int argc, char **argv) {
                 report(mesh, 0, 8, ppmDir);
             }
         }
-#else
-        std::printf("\n--models: built without the formats and extraction units\n");
-#endif
     }
     return 0;
 }

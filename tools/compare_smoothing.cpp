@@ -9,9 +9,9 @@
 //
 // First the fixed shapes one by one; then one table over every family: the fixed families the
 // constrained mode was first tested on (comparison::fidelityShapes) and the families at random
-// orientations and sub-voxel offsets of tests/shapes/shape_families.h. Each cell: worst RMS
+// orientations and sub-voxel offsets of testkit/shapes/shape_families.h. Each cell: worst RMS
 // distance in voxels over the family's shapes, and the worst |volume change|.
-#include "fairing/smoothing_comparison.h"
+#include "smoothers/smoothing_comparison.h"
 #include "shapes/shape_families.h"
 
 #include <algorithm>

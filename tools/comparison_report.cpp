@@ -9,22 +9,22 @@
 // texture and all panels side by side (<model>_strip.png).
 //
 // Tables:
-//   * fidelity against the true surface of analytic shapes (tests/fairing/smoothing_comparison.h);
+//   * fidelity against the true surface of analytic shapes (testkit/smoothers/smoothing_comparison.h);
 //   * the paper's Table 1 (time per stage) and Table 2 (counts per stage) for every input;
 //   * the Taubin chain's times beside ours;
 //   * on real models, where no true surface is known: volume change and vertex displacement.
 // Times are the best of a few runs in this process, single-threaded; benchmarks/pipeline_benchmark
 // measures the same stages with Google Benchmark.
-#include "pipeline_stages.h"
-#include "synthetic_tank.h"
+#include "pipeline/pipeline_stages.h"
+#include "shapes/synthetic_tank.h"
 #include "render/mesh_renderer.h"
 #include "render/png_writer.h"
 
-#include "fairing/smoothing_comparison.h"
-#include "fairing/vcg_taubin.h"
+#include "smoothers/smoothing_comparison.h"
+#include "smoothers/vcg_taubin.h"
 #include "smoother_lineup.h"
 #include "shapes/analytic_shapes.h"
-#include "shapes/surface_error.h"
+#include "checks/surface_error.h"
 
 #include <algorithm>
 #include <cctype>
@@ -164,7 +164,6 @@ ModelRun runChain(const pipeline::Model &model, const std::string &kind) {
     });
     finishVariant(run.ours, model, true);
 
-#ifdef VOXELFAIR_HAVE_CONSTRAINED_FAIRING
     run.hasConstrained = true;
     run.constrained.name = "constrained";
     run.constrained.smoothMs = bestMs(kRepeats, [&] { return run.raw.mesh; }, [&](pipeline::QuadMesh &m) {
@@ -172,10 +171,9 @@ ModelRun runChain(const pipeline::Model &model, const std::string &kind) {
         run.constrained.mesh = std::move(m);
     });
     finishVariant(run.constrained, model, true);
-#endif
 
 #ifdef VOXELFAIR_HAVE_VCGLIB
-    // MeshLab holds the a-c triangulation; its Taubin Smooth runs on that (tests/fairing/vcg_taubin.h).
+    // MeshLab holds the a-c triangulation; its Taubin Smooth runs on that (testkit/smoothers/vcg_taubin.h).
     run.hasTaubin = true;
     run.taubin.name = "Taubin (10 steps)";
     run.taubin.mesh = run.raw.mesh;
@@ -197,7 +195,7 @@ ModelRun runChain(const pipeline::Model &model, const std::string &kind) {
         run.taubin.mesh.positions[i] = glm::vec3(p[0], p[1], p[2]);
     }
     finishVariant(run.taubin, model, true);
-    // MeshLab's HC Laplacian and TwoStep Smooth, the same way (tests/fairing/vcg_smoothers.h).
+    // MeshLab's HC Laplacian and TwoStep Smooth, the same way (testkit/smoothers/vcg_smoothers.h).
     run.hasOtherMeshLab = true;
     run.hc.name = "HC Laplacian";
     run.hc.mesh = run.raw.mesh;
@@ -450,7 +448,7 @@ int main(int argc, char **argv) {
     // Fidelity on analytic shapes.
     md << "## Fidelity to the true surface (voxelized analytic shapes)\n\n"
        << "Distances from 200k area-uniform samples of each triangulated mesh to the shape's exact SDF "
-          "(tests/fairing/smoothing_comparison.h). Bias > 0: the mesh lies outside on average. Volume: "
+          "(testkit/smoothers/smoothing_comparison.h). Bias > 0: the mesh lies outside on average. Volume: "
           "enclosed volume against the true solid's.\n\n";
     Table fidelity{{"shape", "method", "RMS", "max", "bias", "volume %"}, {}, 2};
     for (const ModelRun &run : runs) {
@@ -573,7 +571,7 @@ int main(int argc, char **argv) {
 
     // The shape families at random orientations and offsets.
     md << "## Shape families (random orientations and sub-voxel offsets)\n\n"
-       << "Worst RMS distance to the true surface over 4 shapes of each family of tests/shapes/shape_families.h "
+       << "Worst RMS distance to the true surface over 4 shapes of each family of testkit/shapes/shape_families.h "
           "(20k samples each), worst |volume change| in brackets; best smoothed value in bold.\n\n"
        << lineup::familyTable(4, 20000) << "\n" << lineup::familyPictures(folder, size / 2);
 

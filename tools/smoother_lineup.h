@@ -1,16 +1,16 @@
 // The smoothers users compare, beside ours, for tools/comparison_report: MeshLab's HC Laplacian and
-// TwoStep Smooth as MeshLab runs them (tests/fairing/vcg_smoothers.h), VTK's discrete marching
-// cubes + windowed sinc on every part of a model (tests/fairing/vtk_windowed_sinc.h), and the
-// report's section on the shape families of tests/shapes/shape_families.h: one table (worst RMS
+// TwoStep Smooth as MeshLab runs them (testkit/smoothers/vcg_smoothers.h), VTK's discrete marching
+// cubes + windowed sinc on every part of a model (testkit/smoothers/vtk_windowed_sinc.h), and the
+// report's section on the shape families of testkit/shapes/shape_families.h: one table (worst RMS
 // per family and method) and one picture strip per family (raw voxels, VTK, the paper's pass, the
 // constrained mode), so a reader sees flat faces, fillets and edges.
 #pragma once
 
-#include "pipeline_stages.h"
+#include "pipeline/pipeline_stages.h"
 #include "render/mesh_renderer.h"
 #include "render/png_writer.h"
 
-#include "fairing/smoothing_comparison.h"
+#include "smoothers/smoothing_comparison.h"
 #include "shapes/shape_families.h"
 
 #include <algorithm>

@@ -1,12 +1,12 @@
 // VTK's answer for one voxel model, for the wrapper's --mode compare
 // (meshlab_scripts/voxelfair_convert.py): every part through discrete marching cubes and the
-// windowed sinc filter with its defaults (tools/smoother_lineup.h, tests/fairing/vtk_windowed_sinc.h),
+// windowed sinc filter with its defaults (tools/smoother_lineup.h, testkit/smoothers/vtk_windowed_sinc.h),
 // placed in model space, written as an ASCII PLY of triangles.
 //
 //   voxelfair_vtk_smooth INPUT.vxl|INPUT.vox OUTPUT.ply [--palettes FOLDER]
 //
 // Bad input: a message naming the file and the problem, exit 1; nothing is written.
-#include "pipeline_stages.h"
+#include "pipeline/pipeline_stages.h"
 #include "smoother_lineup.h"
 
 #include <cstdio>

@@ -1,4 +1,4 @@
-// Stage 3 of the atlas (paper section 4.5 and the authors' diffuse texture, vxlse3-notes §6g):
+// Stage 3 of the atlas (paper section 4.5 and the authors' diffuse texture, doc/method.md §6g):
 // paint the mesh's colours into the packed texture.
 //
 // Every triangle is rasterised in UV space twice: first the texels whose centre lies inside it

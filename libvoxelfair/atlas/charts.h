@@ -5,7 +5,7 @@
 //     (the most axis-aligned faces start charts first); ties keep face order.
 //   * Growth: breadth-first over edge-adjacent faces; an unassigned neighbour joins when its
 //     normal is within the cone around the SEED face's normal (not the neighbour's), as the
-//     authors did (vxlse3-notes §6b). Non-manifold edges, and edges between faces of different
+//     authors did (doc/method.md §6b). Non-manifold edges, and edges between faces of different
 //     texel scales, are chart borders. A mesh storing its
 //     corners unshared (more border edges than faces) has its edges matched by position.
 //   * Beyond the paper: a chart whose projection winds over itself (a helical ramp) is cut
@@ -39,7 +39,7 @@ namespace voxelfair {
 
 struct ChartOptions {
     // A face joins a chart when dot(seed normal, face normal) >= minSeedCosine. Default 0.7
-    // (about 45.6 degrees) is the authors' C_TEX_MIN_ANGLE (vxlse3-notes §6b); the paper's text
+    // (about 45.6 degrees) is the authors' C_TEX_MIN_ANGLE (doc/method.md §6b); the paper's text
     // states theta_min = 60 degrees, i.e. 0.5. Clamped to [0.05, 1]: the cone must stay inside
     // the hemisphere, or faces would fold over in the projection.
     float minSeedCosine = 0.7f;

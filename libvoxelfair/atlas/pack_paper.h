@@ -1,4 +1,4 @@
-// The paper's packer (section 4.5; vxlse3-notes §6f): a greedy guillotine tree over the charts'
+// The paper's packer (paper §4.5; doc/method.md §6f): a greedy guillotine tree over the charts'
 // bounding rectangles.
 //
 // Two lists order the partitions by width and by height. Each step takes the two narrowest and

@@ -1,7 +1,7 @@
 // The projection of a chart onto its seed plane (paper section 4.5, equation 11).
 //
 // The paper rotates the seed normal onto the z axis with two Euler angles and keeps x, y; the
-// authors' later code uses one Rodrigues rotation (vxlse3-notes §6c). Any rotation taking the
+// authors' later code uses one Rodrigues rotation (doc/method.md §6c). Any rotation taking the
 // seed normal to +Z gives the same orthographic projection up to an in-plane rotation, which the
 // packer may change anyway. We take the orthonormal basis of Duff et al., "Building an
 // Orthonormal Basis, Revisited" (JCGT 2017): continuous, branch-light, and for the six axis

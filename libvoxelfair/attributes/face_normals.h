@@ -15,7 +15,7 @@ namespace voxelfair {
 glm::vec3 triangleNormal(const glm::vec3 &a, const glm::vec3 &b, const glm::vec3 &c);
 
 // One unit normal per polygon: the normalised sum of the unit normals of its fan triangles
-// (triangulate.h), as the authors did for quads (vxlse3-notes §5); a planar polygon gets its
+// (triangulate.h), as the authors did for quads (doc/method.md §5); a planar polygon gets its
 // plane's normal. (0,0,0) for polygons with no non-degenerate triangle. On error nothing is written.
 PolygonMeshError computePolygonNormals(const glm::vec3 *positions, size_t vertexCount,
                                        const uint32_t *polygonOffsets, const uint32_t *polygonIndices,

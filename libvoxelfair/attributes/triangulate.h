@@ -1,4 +1,4 @@
-// Section 4.4 starts by converting the quads into triangles. Like the authors (vxlse3-notes §5),
+// Section 4.4 starts by converting the quads into triangles. Like the authors (doc/method.md §5),
 // every polygon is split along fixed diagonals: a fan from its first vertex, so a quad (a,b,c,d)
 // becomes (a,b,c) and (a,c,d). A map triangle -> polygon carries the face attributes over.
 #pragma once

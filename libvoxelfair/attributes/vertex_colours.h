@@ -5,7 +5,7 @@
 // not count a quad twice at a and c). Why not area weights: every voxel face is one sample of
 // its voxel's colour and all are equal in voxel space; the area changes after fairing (shrunk
 // corner quads, tilted staircase quads) are geometric, and area weights would make colours depend
-// on them. The authors weighted by centroid distance (vxlse3-notes §5), which on the regular
+// on them. The authors weighted by centroid distance (doc/method.md §5), which on the regular
 // lattice is uniform too. Colours are averaged as given (no sRGB linearisation), like the authors.
 #pragma once
 

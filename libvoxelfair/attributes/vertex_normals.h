@@ -1,6 +1,6 @@
 // Section 4.4: "the surface normal vector of a vertex is calculated as the mean of the surface
 // normal vectors of the faces adjacent to such vertex. This calculation must ignore repetitive
-// directions." As the authors coded it (vxlse3-notes §5): the normalised sum of the DISTINCT
+// directions." As the authors coded it (doc/method.md §5): the normalised sum of the DISTINCT
 // adjacent face normals. On a voxel surface this makes a vertex normal depend only on which
 // directions meet there, not on how many faces share each: the corner of a box gets
 // (±1,±1,±1)/sqrt(3) however the faces around it are sized or split into triangles.

@@ -2,7 +2,7 @@
 // then runs the stages of fairing/constrained/ in order (fairing_state.h lists them) on quads or
 // on general polygons.
 //
-// What makes it fast (about 14 ms on a 100k-vertex sphere, benchmarks/fairing_benchmark.cpp):
+// What makes it fast (benchmarks/fairing_benchmark.cpp measures it; figures in the README):
 // - work arrays in two reused blocks (work_arena.h), not a vector each: no page faults per call;
 // - a vertex's corners with their next and previous vertices in one counting-sorted list, from
 //   which the twins, the creases and the sweeps' order come in one pass (corner_lists.cpp);

@@ -1,5 +1,5 @@
 // Section 4.3 of the paper: surface fairing with the modified discrete Laplacian, the way the
-// authors coded it (vxlse3-notes §4). For every vertex v, from the positions before the pass:
+// authors coded it (doc/method.md §4). For every vertex v, from the positions before the pass:
 //   eq. 8   d = lambda * mean over neighbours n at non-zero distance of (p_n - p_v) / |p_n - p_v|
 //   eq. 9   F(d) = sign(d) (1 - L3(d)) per axis (fairing/lanczos_kernel.h)
 //   eq. 10  p_v' = p_v + voxelSize * (F(d.x), F(d.y), F(d.z))

@@ -40,7 +40,7 @@ PolygonMeshError validatePolygons(size_t vertexCount, const uint32_t *polygonOff
                                   const uint32_t *polygonIndices, size_t polygonCount);
 
 // Neighbours of v = every other vertex of every polygon using v (for quads: the 4 edge and the
-// quad-diagonal neighbours, 8 on a flat lattice; vxlse3-notes §3). Each row is sorted and holds
+// quad-diagonal neighbours, 8 on a flat lattice; paper §4.3, doc/method.md §3). Each row is sorted and holds
 // no duplicate and never v itself (a polygon that repeats a vertex does not make it its own
 // neighbour). On error `out` is left empty.
 PolygonMeshError buildVertexNeighbours(size_t vertexCount, const uint32_t *polygonOffsets,

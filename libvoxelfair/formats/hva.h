@@ -1,4 +1,4 @@
-// Westwood HVA: per-frame, per-section 3x4 matrices that place VXL sections (shared/formats/vxl.md §9).
+// Westwood HVA: per-frame, per-section 3x4 matrices that place VXL sections (Westwood HVA, doc/formats/westwood.md §9).
 #pragma once
 
 #include "formats/vxl.h"

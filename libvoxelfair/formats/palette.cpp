@@ -13,7 +13,7 @@ namespace {
 
 constexpr size_t kBinaryPaletteBytes = 768;
 
-// Brightness ramp of the house-colour entries, brightest first (vxl.md §6, after OS SHP Builder).
+// Brightness ramp of the house-colour entries, brightest first (Westwood VXL §6 in doc/formats/westwood.md, after OS SHP Builder).
 constexpr uint8_t kHouseRamp[16] = {252, 236, 220, 208, 192, 176, 164, 148, 132, 120, 104, 88, 76, 60, 44, 32};
 
 // 6-bit to 8-bit so that 0 -> 0 and 63 -> 255 (a plain << 2 would top out at 252).

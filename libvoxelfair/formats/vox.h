@@ -1,5 +1,5 @@
-// MagicaVoxel .vox reader (file versions 150 and 200). Byte layout: shared/formats/vox.md and the
-// two spec texts beside it.
+// MagicaVoxel .vox reader (file versions 150 and 200). Byte layout: the MagicaVoxel
+// author's public spec (MagicaVoxel-file-format-vox.txt and its extension; doc/formats/magicavoxel.md).
 //
 // Coordinates are MagicaVoxel's, kept as they are: right-handed, z up ("gravity direction"), one
 // unit per voxel -- the same frame as Westwood VXL, so both formats reach the scene layer alike.

@@ -1,5 +1,5 @@
 // Westwood VXL (Command & Conquer: Tiberian Sun, Red Alert 2) reader and writer.
-// Byte layout: shared/formats/vxl.md. Voxel coordinates are those of the file (Westwood space:
+// Byte layout: the community VXL format (ra2ff; doc/formats/westwood.md §1-5). Voxel coordinates are those of the file (Westwood space:
 // x, y horizontal, z up); voxel (x, y, z) is the unit cube [x, x+1] x [y, y+1] x [z, z+1].
 #pragma once
 

@@ -1,4 +1,4 @@
-// Fixed sizes and constants of the VXL layout shared by the reader and the writer (vxl.md §1-4).
+// Fixed sizes and constants of the VXL layout shared by the reader and the writer (Westwood VXL §1-4, doc/formats/westwood.md).
 #pragma once
 
 #include <cstddef>

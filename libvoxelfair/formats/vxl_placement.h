@@ -7,7 +7,7 @@
 
 namespace voxelfair {
 
-// The affine map of the editor the paper's authors wrote (VXLSE; shared/formats/vxl.md §8):
+// The affine map of the editor the paper's authors wrote (VXLSE; doc/formats/westwood.md §8):
 //   p_model = R * (minBounds + v * voxelScale) + t * scale
 // where (R | t) is the section's HVA matrix for the chosen frame. Without an HVA (`hvaMatrix`
 // null) the tailer matrix is used as stored, its translation being already scaled.

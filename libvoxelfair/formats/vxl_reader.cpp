@@ -15,8 +15,8 @@ using namespace vxl;
 
 // What a file may decode to. Without sharing, each column takes 8 bytes of span arrays and each
 // voxel 2 bytes of span data, so a file of n bytes holds fewer than n / 8 columns and n / 2
-// voxels. Sharing is legal (all is addressed by offsets) but no known writer does it (vxl.md
-// surveyed 263 files); unchecked, each 120-byte section re-reading another's span arrays and data
+// voxels. Sharing is legal (all is addressed by offsets) but no known writer does it (none of
+// 263 real files surveyed does); unchecked, each 120-byte section re-reading another's span arrays and data
 // would add 65025 columns and 16.6 million voxels. The caps keep memory and time proportional to
 // the file.
 struct DecodeBudget {

@@ -7,7 +7,7 @@
 // held to the floor measured when it was written.
 #include "atlas/atlas_measures.h"
 #include "atlas/texture_atlas.h"
-#include "pipeline_stages.h"
+#include "pipeline/pipeline_stages.h"
 #include "shapes/analytic_shapes.h"
 #include "shapes/shape_families.h"
 

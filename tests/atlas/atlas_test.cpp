@@ -1,6 +1,6 @@
 // Section 4.5 texture atlas: charts, packing, bake and the measures, on families of meshes.
 #include "atlas/atlas_measures.h"
-#include "atlas/atlas_test_meshes.h"
+#include "shapes/atlas_test_meshes.h"
 #include "atlas/edge_adjacency.h"
 #include "atlas/texel_raster.h"
 #include "atlas/texture_atlas.h"

@@ -3,7 +3,7 @@
 // into needles, every interior point of every face reads its face's colour, at every density
 // that the texture can resolve, in both packers and with a fixed texture size.
 #include "atlas/atlas_measures.h"
-#include "atlas/atlas_test_meshes.h"
+#include "shapes/atlas_test_meshes.h"
 #include "atlas/texture_atlas.h"
 #include "fairing/lanczos_fairing.h"
 

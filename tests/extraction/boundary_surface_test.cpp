@@ -1,7 +1,7 @@
 #include "extraction/boundary_surface.h"
 
-#include "extraction/dense_grid.h"
-#include "extraction/reference_surface.h"
+#include "shapes/dense_grid.h"
+#include "reference_surface.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "extraction/reference_surface.h"
+#include "reference_surface.h"
 
 #include <deque>
 

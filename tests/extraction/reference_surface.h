@@ -2,7 +2,7 @@
 // the run-based code under test.
 #pragma once
 
-#include "extraction/dense_grid.h"
+#include "shapes/dense_grid.h"
 
 #include <array>
 #include <cstddef>

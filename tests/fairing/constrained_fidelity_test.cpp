@@ -7,7 +7,7 @@
 // the drift removal (constrained_fairing.h, step 5): it keeps flat faces and fillets from
 // inflating (tests/fairing/family_fidelity_test.cpp) and costs these shapes up to 0.02 (worst:
 // a torus of tube radius 4 around the x axis, 0.091; spheres centred on a voxel centre, 0.080).
-#include "fairing/smoothing_comparison.h"
+#include "smoothers/smoothing_comparison.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // The constrained mode (constrained_fairing.h) with its defaults on every shape family of
-// tests/shapes/shape_families.h: kInstances instances each at random orientations, sizes and
+// testkit/shapes/shape_families.h: kInstances instances each at random orientations, sizes and
 // sub-voxel offsets (fixed seeds), beside one pass of the paper's fairing and, when built with VTK,
-// VTK's discrete marching cubes + windowed sinc (tests/fairing/vtk_windowed_sinc.h). Each family's
+// VTK's discrete marching cubes + windowed sinc (testkit/smoothers/vtk_windowed_sinc.h). Each family's
 // table is printed, and its goal class is asserted on every instance:
 //
 //   class          issue 15's goal (RMS, voxels)   asserted here          met?
@@ -17,8 +17,8 @@
 // pass and below VTK's, except on the families listed in kBehindPaper and kBehindVtk, where the
 // goal "ahead of both on every shape" is not met (measured; the test fails if they pass the other
 // way round too, so the lists stay true).
-#include "fairing/smoothing_comparison.h"
-#include "fairing/vtk_windowed_sinc.h"
+#include "smoothers/smoothing_comparison.h"
+#include "smoothers/vtk_windowed_sinc.h"
 #include "shapes/shape_families.h"
 
 #include <gtest/gtest.h>

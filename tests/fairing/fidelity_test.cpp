@@ -1,6 +1,6 @@
 // Section 4.3's claim, measured: one pass of the modified-Lanczos fairing brings the voxel
 // surface much closer to the true surface it was sampled from.
-#include "fairing/smoothing_comparison.h"
+#include "smoothers/smoothing_comparison.h"
 
 #include <gtest/gtest.h>
 

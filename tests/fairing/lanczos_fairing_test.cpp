@@ -39,7 +39,7 @@ bool allFinite(const std::vector<glm::vec3> &positions) {
 
 }  // namespace
 
-// vxlse3-notes §4 worked examples: u = (0.402, 0.402, 0.402) at a convex corner, (0.302, 0.302, 0)
+// doc/method.md §4 worked examples: u = (0.402, 0.402, 0.402) at a convex corner, (0.302, 0.302, 0)
 // on a convex edge, 0 on a flat face.
 TEST(FairingLanczos, MovesBoxCornersEdgesAndFacesLikeTheAuthors) {
     const QuadMesh box = shapes::boxLattice(4, 4, 4);

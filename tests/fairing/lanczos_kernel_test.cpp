@@ -7,7 +7,7 @@
 
 using namespace voxelfair;
 
-// vxlse3-notes §4: F as a function of the raw mean u, with d = (4/3) u.
+// doc/method.md §4: F as a function of the raw mean u, with d = (4/3) u.
 TEST(FairingLanczosKernel, MatchesTheAuthorsTable) {
     const struct { double u, f; } table[] = {{0.05, 0.008}, {0.1, 0.032}, {0.25, 0.190}, {1.0 / 3.0, 0.320},
                                              {0.5, 0.619},  {0.6, 0.793}, {0.75, 1.000}, {0.9, 1.118},

@@ -24,7 +24,7 @@ TEST(FairingVertexNeighbours, QuadMakesEveryOtherVertexANeighbourDiagonalsInclud
 }
 
 TEST(FairingVertexNeighbours, FlatLatticeVertexHasEightNeighbours) {
-    // The middle of a 4x4-voxel box face: 4 edge + 4 diagonal neighbours (vxlse3-notes §3);
+    // The middle of a 4x4-voxel box face: 4 edge + 4 diagonal neighbours (doc/method.md §3);
     // a box corner has 3 edge + 3 diagonal neighbours.
     const shapes::QuadMesh box = shapes::boxLattice(4, 4, 4);
     CsrAdjacency n;

@@ -6,7 +6,7 @@
 // on quads and on mixed polygons, with and without selection, over several option sets.
 // CI builds both configurations (VOXELFAIR_NO_SIMD off and on, .ci/run), and this test runs in each.
 #include "fairing/constrained_fairing.h"
-#include "fairing/smoothing_comparison.h"
+#include "smoothers/smoothing_comparison.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 #include "formats/format_error.h"
 #include "formats/hva.h"
-#include "raw_vxl.h"
+#include "fixtures/raw_vxl.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // Every real model in the shared folder loads with the numbers an independent reading of the
-// files gave (a throwaway Python parser of vxl.md's layout), with and without each palette.
+// files gave (a throwaway Python parser of the layout in doc/formats/westwood.md), with and without each palette.
 #include "fixtures/vxl_fixtures.h"
 #include "formats/file_bytes.h"
 #include "formats/hva.h"

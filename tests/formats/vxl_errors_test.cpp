@@ -2,7 +2,7 @@
 #include "fixtures/vxl_fixtures.h"
 #include "formats/format_error.h"
 #include "formats/vxl.h"
-#include "raw_vxl.h"
+#include "fixtures/raw_vxl.h"
 
 #include <gtest/gtest.h>
 

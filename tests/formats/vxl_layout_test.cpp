@@ -1,7 +1,7 @@
 // The reader follows the tailer offsets wherever they point: it never assumes the editor's
 // contiguous layout or that columns follow each other.
 #include "formats/vxl.h"
-#include "raw_vxl.h"
+#include "fixtures/raw_vxl.h"
 
 #include <gtest/gtest.h>
 

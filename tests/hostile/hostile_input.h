@@ -70,7 +70,7 @@ struct SweepRecord {
 void sweepTruncations(Reader read, const Bytes &file, const HeapBound &bound,
                       std::initializer_list<const char *> anyOf, const char *what);
 
-// A file of the shared models folder (../shared/models), or empty when it is absent; tests
+// A file of the shared models folder (VOXELFAIR_MODELS_DIR), or empty when it is absent; tests
 // then skip with a message naming the folder.
 std::filesystem::path modelsDir();
 Bytes loadModel(const std::string &relativePath);

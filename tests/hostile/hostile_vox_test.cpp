@@ -208,7 +208,7 @@ TEST(HostileVox, InstancingCannotMultiplyVoxels) {
 
 TEST(HostileVox, TheInstanceLimitBoundsTheScene) {
     // 2^20 one-voxel instances from 776 bytes: accepted, and placing them stays within the bound
-    // (0.3 s, or 5 s under the sanitizers: a million instances, not a hang).
+    // (a million instances: linear work, not a hang).
     const Bytes b = doublingGraph(20, cube(1));
     const Attempt a = attempt(readAndPlace, b);
     EXPECT_TRUE(a.accepted) << a.error;
@@ -262,8 +262,8 @@ TEST(HostileVox, DenseStructuresStayWithinTheBound) {
 }
 
 TEST(HostileVox, MeshingManyInstancesIsLinear) {
-    // 2^16 one-voxel instances: 0.2 s, 2 s under the sanitizers. Appending each part's surface
-    // once cost time quadratic in the part count (23 s here, about an hour at the 2^20 limit).
+    // 2^16 one-voxel instances. Appending each part's surface to the whole once cost time
+    // quadratic in the part count: this test took minutes that way, and the 2^20 limit hours.
     const Bytes b = doublingGraph(16, cube(1));
     const VoxFile file = readVox(b.data(), b.size());
     const VoxelScene scene = voxScene(file);

@@ -3,7 +3,7 @@
 // a small file would decode to many voxels. Each input is accepted or rejected with a FormatError
 // naming the problem, within the heap bound below.
 #include "fixtures/vxl_fixtures.h"
-#include "formats/raw_vxl.h"  // tests/formats: hand-assembled VXL bytes
+#include "fixtures/raw_vxl.h"  // hand-assembled VXL bytes
 #include "formats/vxl.h"
 #include "hostile_input.h"
 

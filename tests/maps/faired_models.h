@@ -5,7 +5,7 @@
 // (vcg_quadric_tex.h) when vcglib is there.
 #pragma once
 
-#include "../../tools/pipeline_stages.h"
+#include "pipeline/pipeline_stages.h"
 #include "maps/normal_bake.h"
 #include "maps/vcg_quadric_tex.h"
 

@@ -1,5 +1,5 @@
 // Every real .vox file in the shared folder loads with the numbers an independent reading gave
-// (a throwaway Python parser of vox.md's layout, flattening the scene graph with integer
+// (a throwaway Python parser of the spec's layout, flattening the scene graph with integer
 // matrices): models, instances, voxels and the world bounds of all instance voxels.
 #include "formats/file_bytes.h"
 #include "formats/format_error.h"

@@ -12,7 +12,7 @@
 // The four lanes must be independent (no lane a neighbour of another): the sweep's waves
 // (sweep_layout.cpp) make them so, and then the result equals four updates one after another.
 // Why in registers across the four: a few instructions per vertex where one at a time would need
-// horizontal sums and shuffles (sweeps about 1.7 times faster).
+// horizontal sums and shuffles (benchmarks/fairing_benchmark measures the difference).
 #pragma once
 
 #include "fairing/constrained/vec3_simd.h"

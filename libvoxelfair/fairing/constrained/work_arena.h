@@ -9,7 +9,7 @@
 //
 // Why: many vectors would each be mapped and faulted in anew on every call (the allocator hands big
 // blocks back to the system); a few blocks of the same sizes are kept and reused by the allocator
-// (measured in benchmarks/fairing_benchmark: about 20 ms of page faults on 100k vertices otherwise).
+// (benchmarks/fairing_benchmark shows the page faults otherwise).
 #pragma once
 
 #include <cstddef>

@@ -10,11 +10,11 @@
 #include "extraction/boundary_surface.h"
 #include "fairing/constrained_fairing.h"
 #include "fairing/lanczos_fairing.h"
-#include "fairing/vcg_smoothers.h"
-#include "fairing/vcg_taubin.h"
-#include "fairing/vtk_windowed_sinc.h"
+#include "smoothers/vcg_smoothers.h"
+#include "smoothers/vcg_taubin.h"
+#include "smoothers/vtk_windowed_sinc.h"
 #include "shapes/analytic_shapes.h"
-#include "shapes/surface_error.h"
+#include "checks/surface_error.h"
 
 #include <algorithm>
 #include <string>

@@ -5,7 +5,7 @@
 // rivets; turret with hatch, mantlet and a long barrel; camouflage colours.
 #pragma once
 
-#include "pipeline_stages.h"
+#include "pipeline/pipeline_stages.h"
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
 // (vtkWindowedSincPolyDataFilter, Taubin, Zhang and Golub, "Optimal surface smoothing as filter
 // design", ECCV 1996) with the filter's own defaults: 20 iterations, pass band 0.1, boundary
 // smoothing on, feature-edge smoothing off, coordinates not normalized. Those are VTK's best here:
-// on the shape families of tests/shapes/shape_families.h (4 of each) the settings of VTK's
+// on the shape families of testkit/shapes/shape_families.h (4 of each) the settings of VTK's
 // label-smoothing examples (pass band 0.001, coordinates normalized, non-manifold smoothing)
 // shrink the shapes by 5-38% (worst RMS 0.19-0.54 voxel), pass band 0.01 or 0.05 is worse on
 // most families. Only with VOXELFAIR_HAVE_VTK (Debian's libvtk9-dev).

@@ -15,6 +15,7 @@
 #include "attributes/triangulate.h"
 #include "attributes/vertex_colours.h"
 #include "attributes/vertex_normals.h"
+#include "fairing/constrained_fairing.h"
 #include "fairing/lanczos_fairing.h"
 #include "fairing/voxel_size.h"
 #include "formats/file_bytes.h"
@@ -44,12 +45,6 @@
 #include <glm/gtc/type_precision.hpp>
 #include <glm/vec4.hpp>
 
-// The second fairing mode, once libvoxelfair/fairing has it.
-#if __has_include("fairing/constrained_fairing.h")
-#include "fairing/constrained_fairing.h"
-#define VOXELFAIR_HAVE_CONSTRAINED_FAIRING 1
-#endif
-
 namespace voxelfair::pipeline {
 
 // A model ready for meshing. Owns what its scene points into, so it is neither copied nor moved.
@@ -62,7 +57,7 @@ struct Model {
     VoxFile vox;
     std::vector<VoxelVolume> volumes;  // for models built from volumes
     // What the chain runs on. VXL sections stay in their own voxel units, as the authors ran
-    // them (vxlse3-notes §1): a model mixing section scales (subapc's HVA shrinks four of its five
+    // them (doc/method.md §1): a model mixing section scales (subapc's HVA shrinks four of its five
     // sections to 0.01) would otherwise have no single voxel size for the fairing and the atlas.
     VoxelScene scene;
     // Per part: the chain's coordinates -> model space, for pictures (identity when equal).
@@ -232,7 +227,6 @@ inline FairingReport fair(QuadMesh &mesh, LanczosFairingOptions options = {}) {
                                mesh.quadCount(), nullptr, options);
 }
 
-#ifdef VOXELFAIR_HAVE_CONSTRAINED_FAIRING
 // The constrained mode (default options) in place of the paper's fairing.
 inline ConstrainedFairingReport fairConstrainedMode(QuadMesh &mesh, ConstrainedFairingOptions options = {}) {
     if (options.voxelSize == 0.0f)
@@ -240,7 +234,6 @@ inline ConstrainedFairingReport fairConstrainedMode(QuadMesh &mesh, ConstrainedF
     return fairConstrained(mesh.positions.data(), mesh.positions.size(), mesh.offsets.data(), mesh.quads.data(),
                            mesh.quadCount(), nullptr, options);
 }
-#endif
 
 // Section 4.4's output, on the (faired) quad mesh's vertices.
 struct Attributes {
