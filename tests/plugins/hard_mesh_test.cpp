@@ -98,9 +98,11 @@ TEST(HardMeshes, FiltersFinishWithoutCrashOrNewNaN) {
         const PlyMesh after = readAsciiPly(dir + "/out.ply");
         ASSERT_EQ(after.positions.size(), before.positions.size());
         for (size_t v = 0; v < after.positions.size(); ++v)
-            for (int k = 0; k < 3; ++k)
-                if (std::isfinite(before.positions[v][size_t(k)]))
+            for (int k = 0; k < 3; ++k) {
+                if (std::isfinite(before.positions[v][size_t(k)])) {
                     EXPECT_TRUE(std::isfinite(after.positions[v][size_t(k)])) << "vertex " << v << "\n" << run.output;
+                }
+            }
         ASSERT_EQ(after.wedgeUv.size(), after.triangles.size());
         for (const auto &uv : after.wedgeUv)
             for (float x : uv) EXPECT_TRUE(std::isfinite(x) && x >= 0.0f && x <= 1.0f);
