@@ -33,10 +33,9 @@ struct FairedSphere {
         offsets.resize(quadCount() + 1);
         for (size_t q = 0; q < offsets.size(); ++q)
             offsets[q] = uint32_t(4 * q);
-        fairModifiedLanczos(positions.data(), positions.size(), offsets.data(), quads.data(), quadCount(), nullptr);
+        fairModifiedLanczos({positions.data(), positions.size(), offsets.data(), quads.data(), quadCount()}, nullptr);
         quadNormals.resize(quadCount());
-        computePolygonNormals(positions.data(), positions.size(), offsets.data(), quads.data(), quadCount(),
-                              quadNormals.data());
+        computePolygonNormals({positions.data(), positions.size(), offsets.data(), quads.data(), quadCount()}, quadNormals.data());
         for (const Voxel &v : s.quadVoxels)
             quadColours.emplace_back(v.colour / 255.0f, 0.5f, 1.0f - v.colour / 255.0f, 1.0f);
     }
@@ -55,10 +54,9 @@ void setCounters(benchmark::State &state) {
 
 void BM_TriangulateQuads(benchmark::State &state) {
     const FairedSphere &m = mesh();
-    std::vector<uint32_t> triangles(3 * countFanTriangles(m.offsets.data(), m.quadCount())), toQuad(triangles.size() / 3);
+    std::vector<uint32_t> triangles(3 * countFanTriangles({nullptr, 0, m.offsets.data(), nullptr, m.quadCount()})), toQuad(triangles.size() / 3);
     for (auto _ : state) {
-        triangulatePolygons(m.positions.size(), m.offsets.data(), m.quads.data(), m.quadCount(), triangles.data(),
-                            toQuad.data());
+        triangulatePolygons({nullptr, m.positions.size(), m.offsets.data(), m.quads.data(), m.quadCount()}, triangles.data(), toQuad.data());
         benchmark::DoNotOptimize(triangles.data());
     }
     setCounters(state);
@@ -69,8 +67,7 @@ void BM_QuadNormals(benchmark::State &state) {
     const FairedSphere &m = mesh();
     std::vector<glm::vec3> normals(m.quadCount());
     for (auto _ : state) {
-        computePolygonNormals(m.positions.data(), m.positions.size(), m.offsets.data(), m.quads.data(), m.quadCount(),
-                              normals.data());
+        computePolygonNormals({m.positions.data(), m.positions.size(), m.offsets.data(), m.quads.data(), m.quadCount()}, normals.data());
         benchmark::DoNotOptimize(normals.data());
     }
     setCounters(state);
@@ -81,8 +78,7 @@ void BM_VertexNormals(benchmark::State &state) {
     const FairedSphere &m = mesh();
     std::vector<glm::vec3> normals(m.positions.size());
     for (auto _ : state) {
-        computeVertexNormals(m.positions.size(), m.offsets.data(), m.quads.data(), m.quadCount(), m.quadNormals.data(),
-                             normals.data());
+        computeVertexNormals({nullptr, m.positions.size(), m.offsets.data(), m.quads.data(), m.quadCount()}, m.quadNormals.data(), normals.data());
         benchmark::DoNotOptimize(normals.data());
     }
     setCounters(state);
@@ -93,8 +89,7 @@ void BM_VertexColours(benchmark::State &state) {
     const FairedSphere &m = mesh();
     std::vector<glm::vec4> colours(m.positions.size());
     for (auto _ : state) {
-        computeVertexColours(m.positions.size(), m.offsets.data(), m.quads.data(), m.quadCount(), m.quadColours.data(),
-                             colours.data());
+        computeVertexColours({nullptr, m.positions.size(), m.offsets.data(), m.quads.data(), m.quadCount(), m.quadColours.data()}, colours.data());
         benchmark::DoNotOptimize(colours.data());
     }
     setCounters(state);

@@ -9,7 +9,7 @@
 #include "extraction/boundary_surface.h"
 #include "fairing/constrained_fairing.h"
 #include "fairing/lanczos_fairing.h"
-#include "fairing/polygon_adjacency.h"
+#include "mesh/csr_adjacency.h"
 #include "smoothers/vcg_taubin.h"
 #include "shapes/analytic_shapes.h"
 
@@ -36,9 +36,9 @@ struct SphereMesh {
         offsets.resize(quadCount() + 1);
         for (size_t q = 0; q < offsets.size(); ++q)
             offsets[q] = uint32_t(4 * q);
-        triangles.resize(3 * countFanTriangles(offsets.data(), quadCount()));
-        triangulatePolygons(positions.size(), offsets.data(), quads.data(), quadCount(), triangles.data(), nullptr);
-        buildVertexNeighbours(positions.size(), offsets.data(), quads.data(), quadCount(), neighbours);
+        triangles.resize(3 * countFanTriangles({nullptr, 0, offsets.data(), nullptr, quadCount()}));
+        triangulatePolygons({nullptr, positions.size(), offsets.data(), quads.data(), quadCount()}, triangles.data(), nullptr);
+        buildVertexNeighbours({nullptr, positions.size(), offsets.data(), quads.data(), quadCount()}, neighbours);
     }
     size_t quadCount() const { return quads.size() / 4; }
 };
@@ -58,7 +58,7 @@ void BM_NeighbourAdjacency(benchmark::State &state) {
     const SphereMesh &m = mesh();
     for (auto _ : state) {
         CsrAdjacency n;
-        buildVertexNeighbours(m.positions.size(), m.offsets.data(), m.quads.data(), m.quadCount(), n);
+        buildVertexNeighbours({nullptr, m.positions.size(), m.offsets.data(), m.quads.data(), m.quadCount()}, n);
         benchmark::DoNotOptimize(n.items.data());
     }
     setCounters(state);
@@ -95,7 +95,7 @@ void timeWholeCalls(benchmark::State &state, Fair &&fair) {
 // What a caller pays per call: validation, voxel-size detection, adjacency, copy, one pass.
 void BM_FairModifiedLanczosCall(benchmark::State &state) {
     timeWholeCalls(state, [](const SphereMesh &m, std::vector<glm::vec3> &p) {
-        fairModifiedLanczos(p.data(), p.size(), m.offsets.data(), m.quads.data(), m.quadCount(), nullptr);
+        fairModifiedLanczos({p.data(), p.size(), m.offsets.data(), m.quads.data(), m.quadCount()}, nullptr);
     });
 }
 BENCHMARK(BM_FairModifiedLanczosCall)->Unit(benchmark::kMillisecond);
@@ -103,7 +103,7 @@ BENCHMARK(BM_FairModifiedLanczosCall)->Unit(benchmark::kMillisecond);
 // The second mode with its defaults, everything included (classification, normals, fitting).
 void BM_FairConstrainedCall(benchmark::State &state) {
     timeWholeCalls(state, [](const SphereMesh &m, std::vector<glm::vec3> &p) {
-        fairConstrained(p.data(), p.size(), m.offsets.data(), m.quads.data(), m.quadCount(), nullptr);
+        fairConstrained({p.data(), p.size(), m.offsets.data(), m.quads.data(), m.quadCount()}, nullptr);
     });
 }
 BENCHMARK(BM_FairConstrainedCall)->Unit(benchmark::kMillisecond);
@@ -140,12 +140,11 @@ void BM_SpeedRatios(benchmark::State &state) {
     for (auto _ : state) {
         positions = m.positions;
         double t = cpuMilliseconds();
-        fairModifiedLanczos(positions.data(), positions.size(), m.offsets.data(), m.quads.data(), m.quadCount(), nullptr);
+        fairModifiedLanczos({positions.data(), positions.size(), m.offsets.data(), m.quads.data(), m.quadCount()}, nullptr);
         paper += cpuMilliseconds() - t;
         positions = m.positions;
         t = cpuMilliseconds();
-        fairConstrained(positions.data(), positions.size(), m.offsets.data(), m.quads.data(), m.quadCount(), nullptr,
-                        options);
+        fairConstrained({positions.data(), positions.size(), m.offsets.data(), m.quads.data(), m.quadCount()}, nullptr, options);
         constrained += cpuMilliseconds() - t;
         t = cpuMilliseconds();
         vcgtaubin::taubinLikeMeshLab(vm, 10, 0.5f, -0.53f);

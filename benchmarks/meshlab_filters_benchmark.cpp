@@ -78,8 +78,7 @@ void BM_LanczosFairingUnit(benchmark::State &state) {
         state.PauseTiming();
         positions = f.surface.positions;
         state.ResumeTiming();
-        fairModifiedLanczos(positions.data(), positions.size(), offsets.data(), f.surface.quads.data(),
-                            f.surface.quadCount(), nullptr, LanczosFairingOptions{});
+        fairModifiedLanczos({positions.data(), positions.size(), offsets.data(), f.surface.quads.data(), f.surface.quadCount()}, nullptr, LanczosFairingOptions{});
         benchmark::DoNotOptimize(positions.data());
     }
     state.counters["vertices"] = double(f.surface.positions.size());

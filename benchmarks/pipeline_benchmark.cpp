@@ -145,8 +145,7 @@ void fairing(benchmark::State &state, const Prepared &p) {
         state.PauseTiming();
         positions = p.raw.positions;
         state.ResumeTiming();
-        fairModifiedLanczos(positions.data(), positions.size(), p.raw.offsets.data(), p.raw.quads.data(),
-                            p.raw.quadCount(), nullptr, options);
+        fairModifiedLanczos({positions.data(), positions.size(), p.raw.offsets.data(), p.raw.quads.data(), p.raw.quadCount()}, nullptr, options);
         benchmark::DoNotOptimize(positions.data());
     }
 }

@@ -97,13 +97,10 @@ bool FilterVoxelfairPlugin::applyTextureAtlas(MeshModel &m, const RichParameterL
         for (size_t k = 0; k < parts.size(); ++k) {
             const PartArrays &part = parts[k];
             if (largest == nullptr || part.polygonCount() > largest->polygonCount()) largest = &part;
-            partVoxel[k] = detectVoxelSize(part.positions.data(), part.positions.size(), part.polygonOffsets.data(),
-                                           part.polygonIndices.data(), part.polygonCount());
+            partVoxel[k] = detectVoxelSize({part.positions.data(), part.positions.size(), part.polygonOffsets.data(), part.polygonIndices.data(), part.polygonCount()});
         }
         voxelSize = largest ? partVoxel[size_t(largest - parts.data())]
-                            : detectVoxelSize(arrays.positions.data(), arrays.positions.size(),
-                                              arrays.polygonOffsets.data(), arrays.polygonIndices.data(),
-                                              arrays.polygonCount());
+                            : detectVoxelSize({arrays.positions.data(), arrays.positions.size(), arrays.polygonOffsets.data(), arrays.polygonIndices.data(), arrays.polygonCount()});
         if (!(voxelSize > 0.0f) || !std::isfinite(voxelSize)) voxelSize = 1.0f;
         // Part number -> texel scale (part numbers are small, as splitByPart assumes).
         std::vector<float> scaleOfPart;

@@ -3,6 +3,7 @@
 #include "meshlab_arrays.h"
 
 #include "attributes/face_normals.h"
+#include "base/error.h"
 #include "attributes/vertex_colours.h"
 #include "attributes/vertex_normals.h"
 #include "fairing/constrained_fairing.h"
@@ -34,34 +35,29 @@ struct FairingSummary {
     }
 };
 
-// Runs the chosen mode on one set of polygon arrays; returns an error message or nullptr.
-const char *fairArrays(bool constrained, const RichParameterList &parameters, std::vector<glm::vec3> &positions,
-                       const std::vector<uint32_t> &offsets, const std::vector<uint32_t> &indices,
-                       const uint8_t *selected, FairingSummary &summary) {
-    const size_t polygons = offsets.empty() ? 0 : offsets.size() - 1;
+// Runs the chosen mode on one set of polygon arrays; throws voxelfair::Error on bad input.
+void fairArrays(bool constrained, const RichParameterList &parameters, std::vector<glm::vec3> &positions,
+                const std::vector<uint32_t> &offsets, const std::vector<uint32_t> &indices, const uint8_t *selected,
+                FairingSummary &summary) {
+    const MutablePolygonMesh mesh = mutablePolygonMesh(positions, offsets, indices);
     const float voxelSize = parameters.getFloat("voxelSize");
     if (constrained) {
         ConstrainedFairingOptions options;
         options.voxelSize = voxelSize;
-        const ConstrainedFairingReport r =
-            fairConstrained(positions.data(), positions.size(), offsets.data(), indices.data(), polygons, selected, options);
-        if (r.failed()) return r.message;
+        const ConstrainedFairingReport r = fairConstrained(mesh, selected, options);
         if (r.status == FairingStatus::Ok) {
             summary.add(r.movedVertices, r.skippedVertices, r.maxDisplacement, r.voxelSize);
             summary.extra = QString("%1 sharp edges kept, %2 vertices pinned, %3 held by their voxel cell")
                                 .arg(r.sharpEdges).arg(r.pinnedVertices).arg(r.clampedVertices).toStdString();
         }
-        return nullptr;
+        return;
     }
     LanczosFairingOptions options;
     options.lambda = parameters.getFloat("lambda");
     options.passes = parameters.getInt("passes");
     options.voxelSize = voxelSize;
-    const FairingReport r =
-        fairModifiedLanczos(positions.data(), positions.size(), offsets.data(), indices.data(), polygons, selected, options);
-    if (r.failed()) return r.message;
+    const FairingReport r = fairModifiedLanczos(mesh, selected, options);
     if (r.status == FairingStatus::Ok) summary.add(r.movedVertices, r.skippedVertices, r.maxDisplacement, r.voxelSize);
-    return nullptr;
 }
 
 }  // namespace
@@ -83,14 +79,20 @@ bool FilterVoxelfairPlugin::applyLanczosFairing(MeshModel &m, const RichParamete
     std::vector<PartArrays> parts = parameters.getFloat("voxelSize") > 0 ? std::vector<PartArrays>{}
                                                                          : splitByPart(arrays, m.cm);
     if (parts.empty()) {
-        if (const char *error = fairArrays(constrained, parameters, arrays.positions, arrays.polygonOffsets,
-                                           arrays.polygonIndices, selectedOnly ? arrays.selected.data() : nullptr, summary))
-            return fail(QString("Voxel Fairing: %1").arg(error));
+        try {
+            fairArrays(constrained, parameters, arrays.positions, arrays.polygonOffsets, arrays.polygonIndices,
+                       selectedOnly ? arrays.selected.data() : nullptr, summary);
+        } catch (const Error &e) {
+            return fail(QString("Voxel Fairing: %1").arg(e.what()));
+        }
     } else {
         for (PartArrays &part : parts) {
-            if (const char *error = fairArrays(constrained, parameters, part.positions, part.polygonOffsets,
-                                               part.polygonIndices, selectedOnly ? part.selected.data() : nullptr, summary))
-                return fail(QString("Voxel Fairing: part %1: %2").arg(part.part).arg(error));
+            try {
+                fairArrays(constrained, parameters, part.positions, part.polygonOffsets, part.polygonIndices,
+                           selectedOnly ? part.selected.data() : nullptr, summary);
+            } catch (const Error &e) {
+                return fail(QString("Voxel Fairing: part %1: %2").arg(part.part).arg(e.what()));
+            }
             for (size_t v = 0; v < part.positions.size(); ++v) arrays.positions[part.globalVertex[v]] = part.positions[v];
         }
     }
@@ -130,15 +132,14 @@ bool FilterVoxelfairPlugin::applyAttributeSmoothing(MeshModel &m, const RichPara
     if (cb) cb(10, "Reading polygons");
     const PolygonArrays arrays = polygonArrays(m.cm);
     const size_t polygons = arrays.polygonCount();
+    PolygonMesh mesh = polygonMesh(arrays.positions, arrays.polygonOffsets, arrays.polygonIndices);
 
     std::vector<glm::vec3> polygonNormals(polygons);
     std::vector<glm::vec3> vertexNormals(arrays.positions.size());
-    computePolygonNormals(arrays.positions.data(), arrays.positions.size(), arrays.polygonOffsets.data(),
-                          arrays.polygonIndices.data(), polygons, polygonNormals.data());
+    computePolygonNormals(mesh, polygonNormals.data());
     VertexNormalOptions normalOptions;
     if (!parameters.getBool("distinctNormals")) normalOptions.sameDirection = 2.0f;  // never merge: plain mean
-    computeVertexNormals(arrays.positions.size(), arrays.polygonOffsets.data(), arrays.polygonIndices.data(), polygons,
-                         polygonNormals.data(), vertexNormals.data(), normalOptions);
+    computeVertexNormals(mesh, polygonNormals.data(), vertexNormals.data(), normalOptions);
 
     // Face colours: the polygon's first triangle's colour; without face colours, the vertex colours
     // already there (or a flat grey) are kept and said so.
@@ -150,8 +151,8 @@ bool FilterVoxelfairPlugin::applyAttributeSmoothing(MeshModel &m, const RichPara
             polygonColours[p] = glm::vec4(c[0], c[1], c[2], c[3]);
         }
         std::vector<glm::vec4> vertexColours(arrays.positions.size());
-        computeVertexColours(arrays.positions.size(), arrays.polygonOffsets.data(), arrays.polygonIndices.data(),
-                             polygons, polygonColours.data(), vertexColours.data());
+        mesh.polygonColours = polygonColours.data();
+        computeVertexColours(mesh, vertexColours.data());
         m.updateDataMask(MeshModel::MM_VERTCOLOR);
         for (size_t i = 0; i < arrays.vertexOf.size(); ++i) {
             const glm::vec4 c = glm::clamp(glm::round(vertexColours[i]), 0.0f, 255.0f);

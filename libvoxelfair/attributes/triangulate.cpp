@@ -2,24 +2,21 @@
 
 namespace voxelfair {
 
-size_t countFanTriangles(const uint32_t *polygonOffsets, size_t polygonCount) {
+size_t countFanTriangles(const PolygonMesh &mesh) {
     size_t count = 0;
-    for (size_t p = 0; p < polygonCount; ++p) {
-        const uint32_t arity = polygonOffsets[p + 1] - polygonOffsets[p];
+    for (size_t p = 0; p < mesh.polygonCount; ++p) {
+        const uint32_t arity = mesh.arity(p);
         if (arity >= 3)
             count += arity - 2;
     }
     return count;
 }
 
-PolygonMeshError triangulatePolygons(size_t vertexCount, const uint32_t *polygonOffsets,
-                                     const uint32_t *polygonIndices, size_t polygonCount, uint32_t *triangles,
-                                     uint32_t *triangleToPolygon) {
-    if (PolygonMeshError e = validatePolygons(vertexCount, polygonOffsets, polygonIndices, polygonCount);
-        e != PolygonMeshError::None)
-        return e;
+void triangulatePolygons(const PolygonMesh &mesh, uint32_t *triangles, uint32_t *triangleToPolygon) {
+    validatePolygons(mesh);
+    const uint32_t *const polygonOffsets = mesh.polygonOffsets, *const polygonIndices = mesh.polygonIndices;
     size_t t = 0;
-    for (size_t p = 0; p < polygonCount; ++p) {
+    for (size_t p = 0; p < mesh.polygonCount; ++p) {
         const uint32_t first = polygonOffsets[p], last = polygonOffsets[p + 1];
         for (uint32_t i = first + 1; i + 1 < last; ++i, ++t) {
             triangles[3 * t + 0] = polygonIndices[first];
@@ -29,7 +26,6 @@ PolygonMeshError triangulatePolygons(size_t vertexCount, const uint32_t *polygon
                 triangleToPolygon[t] = uint32_t(p);
         }
     }
-    return PolygonMeshError::None;
 }
 
 }  // namespace voxelfair

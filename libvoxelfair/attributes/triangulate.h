@@ -3,7 +3,7 @@
 // becomes (a,b,c) and (a,c,d). A map triangle -> polygon carries the face attributes over.
 #pragma once
 
-#include "fairing/polygon_adjacency.h"
+#include "mesh/polygon_mesh.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -12,13 +12,11 @@ namespace voxelfair {
 
 // Triangles the fan produces: the sum of (arity - 2) over polygons of 3 or more vertices.
 // Offsets must be valid (validatePolygons).
-size_t countFanTriangles(const uint32_t *polygonOffsets, size_t polygonCount);
+size_t countFanTriangles(const PolygonMesh &mesh);
 
 // Writes 3 indices per triangle to `triangles` and, when non-null, the polygon of each triangle
 // to `triangleToPolygon`; both sized by countFanTriangles(). Winding is kept. Polygons of fewer
-// than 3 vertices yield nothing. On error nothing is written.
-PolygonMeshError triangulatePolygons(size_t vertexCount, const uint32_t *polygonOffsets,
-                                     const uint32_t *polygonIndices, size_t polygonCount, uint32_t *triangles,
-                                     uint32_t *triangleToPolygon);
+// than 3 vertices yield nothing. Throws MeshError on invalid polygons, before writing anything.
+void triangulatePolygons(const PolygonMesh &mesh, uint32_t *triangles, uint32_t *triangleToPolygon);
 
 }  // namespace voxelfair

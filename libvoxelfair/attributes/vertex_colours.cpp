@@ -1,14 +1,16 @@
 #include "attributes/vertex_colours.h"
 
+#include "base/error.h"
+#include "mesh/csr_adjacency.h"
+
 namespace voxelfair {
 
-PolygonMeshError computeVertexColours(size_t vertexCount, const uint32_t *polygonOffsets,
-                                      const uint32_t *polygonIndices, size_t polygonCount,
-                                      const glm::vec4 *polygonColours, glm::vec4 *vertexColours) {
-    CsrAdjacency polygonsOf;
-    if (PolygonMeshError e = buildVertexPolygons(vertexCount, polygonOffsets, polygonIndices, polygonCount, polygonsOf);
-        e != PolygonMeshError::None)
-        return e;
+void computeVertexColours(const PolygonMesh &mesh, glm::vec4 *vertexColours) {
+    if (!mesh.polygonColours && mesh.polygonCount > 0)
+        throw MeshError("vertex colours: the mesh has no polygon colours");
+    const CsrAdjacency polygonsOf = buildVertexPolygons(mesh);
+    const glm::vec4 *const polygonColours = mesh.polygonColours;
+    const size_t vertexCount = mesh.vertexCount;
     for (size_t v = 0; v < vertexCount; ++v) {
         glm::vec4 sum(0.0f);
         for (const uint32_t *p = polygonsOf.begin(v), *end = polygonsOf.end(v); p != end; ++p)
@@ -16,7 +18,6 @@ PolygonMeshError computeVertexColours(size_t vertexCount, const uint32_t *polygo
         const size_t count = polygonsOf.size(v);
         vertexColours[v] = count ? sum / float(count) : glm::vec4(0.0f);
     }
-    return PolygonMeshError::None;
 }
 
 }  // namespace voxelfair

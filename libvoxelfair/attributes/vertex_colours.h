@@ -9,7 +9,7 @@
 // lattice is uniform too. Colours are averaged as given (no sRGB linearisation), like the authors.
 #pragma once
 
-#include "fairing/polygon_adjacency.h"
+#include "mesh/polygon_mesh.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -19,9 +19,8 @@
 namespace voxelfair {
 
 // Writes the mean of the adjacent polygons' colours to every vertex ((0,0,0,0) for a vertex no
-// polygon uses). Call it on the quads, before triangulation. On error nothing is written.
-PolygonMeshError computeVertexColours(size_t vertexCount, const uint32_t *polygonOffsets,
-                                      const uint32_t *polygonIndices, size_t polygonCount,
-                                      const glm::vec4 *polygonColours, glm::vec4 *vertexColours);
+// polygon uses), from the mesh's polygonColours. Call it on the quads, before triangulation.
+// Throws MeshError on invalid polygons or missing colours, before writing anything.
+void computeVertexColours(const PolygonMesh &mesh, glm::vec4 *vertexColours);
 
 }  // namespace voxelfair

@@ -1,5 +1,7 @@
 #include "attributes/vertex_normals.h"
 
+#include "mesh/csr_adjacency.h"
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -8,14 +10,10 @@
 
 namespace voxelfair {
 
-PolygonMeshError computeVertexNormals(size_t vertexCount, const uint32_t *polygonOffsets,
-                                      const uint32_t *polygonIndices, size_t polygonCount,
-                                      const glm::vec3 *polygonNormals, glm::vec3 *vertexNormals,
-                                      const VertexNormalOptions &options) {
-    CsrAdjacency polygonsOf;
-    if (PolygonMeshError e = buildVertexPolygons(vertexCount, polygonOffsets, polygonIndices, polygonCount, polygonsOf);
-        e != PolygonMeshError::None)
-        return e;
+void computeVertexNormals(const PolygonMesh &mesh, const glm::vec3 *polygonNormals, glm::vec3 *vertexNormals,
+                          const VertexNormalOptions &options) {
+    const CsrAdjacency polygonsOf = buildVertexPolygons(mesh);
+    const size_t vertexCount = mesh.vertexCount;
 
     // A handful of faces meet at a vertex, so a linear scan of the directions kept so far is
     // the cheapest dedupe; the scratch holds the longest row, so it never grows in the loop.
@@ -40,7 +38,6 @@ PolygonMeshError computeVertexNormals(size_t vertexCount, const uint32_t *polygo
         const float length = glm::length(sum);
         vertexNormals[v] = length > 1e-6f && std::isfinite(length) ? sum / length : glm::vec3(0.0f);
     }
-    return PolygonMeshError::None;
 }
 
 }  // namespace voxelfair

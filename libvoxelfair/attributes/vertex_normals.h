@@ -6,7 +6,7 @@
 // (±1,±1,±1)/sqrt(3) however the faces around it are sized or split into triangles.
 #pragma once
 
-#include "fairing/polygon_adjacency.h"
+#include "mesh/polygon_mesh.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -24,10 +24,9 @@ struct VertexNormalOptions {
 
 // Writes one unit normal per vertex from one unit normal per polygon (face_normals.h). Faces
 // with a (0,0,0) normal are ignored; a vertex left with nothing, or whose distinct normals
-// cancel, gets (0,0,0). On error nothing is written.
-PolygonMeshError computeVertexNormals(size_t vertexCount, const uint32_t *polygonOffsets,
-                                      const uint32_t *polygonIndices, size_t polygonCount,
-                                      const glm::vec3 *polygonNormals, glm::vec3 *vertexNormals,
-                                      const VertexNormalOptions &options = {});
+// cancel, gets (0,0,0). The positions are not used. Throws MeshError on invalid polygons, before
+// writing anything.
+void computeVertexNormals(const PolygonMesh &mesh, const glm::vec3 *polygonNormals, glm::vec3 *vertexNormals,
+                          const VertexNormalOptions &options = {});
 
 }  // namespace voxelfair

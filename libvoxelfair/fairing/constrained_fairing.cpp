@@ -15,6 +15,7 @@
 #include "fairing/constrained_fairing.h"
 
 #include "fairing/constrained/fairing_state.h"
+#include "base/error.h"
 
 #include <algorithm>
 #include <cmath>
@@ -60,9 +61,8 @@ void run(constrained::FairingState<kQuads> &s) {
 
 inline namespace VOXELFAIR_SIMD_VARIANT {
 
-ConstrainedFairingReport fairConstrained(glm::vec3 *positions, size_t vertexCount, const uint32_t *polygonOffsets,
-                                         const uint32_t *polygonIndices, size_t polygonCount,
-                                         const uint8_t *vertexSelected, const ConstrainedFairingOptions &options) {
+ConstrainedFairingReport fairConstrained(const MutablePolygonMesh &mesh, const uint8_t *vertexSelected,
+                                         const ConstrainedFairingOptions &options) {
     ConstrainedFairingReport report;
     auto finish = [&](FairingStatus status, const char *message) {
         report.status = status;
@@ -75,13 +75,15 @@ ConstrainedFairingReport fairConstrained(glm::vec3 *positions, size_t vertexCoun
         !std::isfinite(options.cellHalfWidth) ||
         !(options.creaseAngleDegrees > 0.0f && options.creaseAngleDegrees < 180.0f) ||
         !std::isfinite(options.voxelSize) || options.voxelSize < 0.0f)
-        return finish(FairingStatus::InvalidOptions,
-                      "passes, positionSweeps, driftRounds >= 0, normalLevels in [0, 8], stepReach >= 1, featureReach >= 0, "
-                      "cellHalfWidth > 0, creaseAngle in (0, 180), voxelSize finite and >= 0");
-    if (const auto [status, message] = checkFairingInput(positions, vertexCount, polygonOffsets, polygonIndices,
-                                                         polygonCount, options.passes);
+        throw OptionError("constrained fairing: passes, positionSweeps, driftRounds >= 0, normalLevels in [0, 8], "
+                          "stepReach >= 1, featureReach >= 0, cellHalfWidth > 0, creaseAngle in (0, 180), voxelSize "
+                          "finite and >= 0");
+    if (const FairingStatus status = checkFairingInput(mesh, options.passes, &report.message);
         status != FairingStatus::Ok)
-        return finish(status, message);
+        return finish(status, report.message);
+    glm::vec3 *const positions = mesh.positions;
+    const size_t vertexCount = mesh.vertexCount, polygonCount = mesh.polygonCount;
+    const uint32_t *const polygonOffsets = mesh.polygonOffsets, *const polygonIndices = mesh.polygonIndices;
 
     bool allQuads = polygonOffsets[polygonCount] == 4 * polygonCount;
     for (size_t p = 0; allQuads && p < polygonCount; ++p)

@@ -110,21 +110,16 @@ struct ConstrainedFairingReport {
     size_t movedVertices = 0;       // vertices that ended more than 1e-6 voxel from their input
     size_t clampedVertices = 0;     // vertices that ended on the wall of their cell
     float maxDisplacement = 0.0f;   // longest move of a vertex from its input, in position units
-
-    bool failed() const { return status == FairingStatus::InvalidMesh || status == FairingStatus::InvalidOptions; }
 };
 
 inline namespace VOXELFAIR_SIMD_VARIANT {  // sse2 or scalar: see simd_variant.h
 
-// Smooths `positions` in place. Polygons as in polygon_adjacency.h (polygonOffsets has
-// polygonCount + 1 entries); the staircase test needs quads (the voxel surface's), other
+// Smooths the mesh's positions in place (mesh/polygon_mesh.h); the staircase test needs quads (the voxel surface's), other
 // polygons are smoothed but their creases count as genuine. With `vertexSelected` (nullable,
 // one byte per vertex) only vertices with a non-zero byte move; the others stay as they are and
 // still act as neighbours. Never produces NaN: non-finite vertices are skipped (their polygons
 // count as holes), degenerate polygons are ignored.
-ConstrainedFairingReport fairConstrained(glm::vec3 *positions, size_t vertexCount, const uint32_t *polygonOffsets,
-                                         const uint32_t *polygonIndices, size_t polygonCount,
-                                         const uint8_t *vertexSelected,
+ConstrainedFairingReport fairConstrained(const MutablePolygonMesh &mesh, const uint8_t *vertexSelected,
                                          const ConstrainedFairingOptions &options = {});
 
 }  // namespace VOXELFAIR_SIMD_VARIANT

@@ -2,6 +2,8 @@
 
 #include "fairing/lanczos_kernel.h"
 #include "fairing/voxel_size.h"
+#include "base/error.h"
+#include "mesh/vector_helpers.h"
 
 #include <algorithm>
 #include <cmath>
@@ -54,25 +56,22 @@ FairingPassStats lanczosFairingPass(const glm::vec3 *in, glm::vec3 *out, const C
     return stats;
 }
 
-std::pair<FairingStatus, const char *> checkFairingInput(const glm::vec3 *positions, size_t vertexCount,
-                                                         const uint32_t *polygonOffsets,
-                                                         const uint32_t *polygonIndices, size_t polygonCount,
-                                                         int passes) {
-    if (PolygonMeshError e = validatePolygons(vertexCount, polygonOffsets, polygonIndices, polygonCount);
-        e != PolygonMeshError::None)
-        return {FairingStatus::InvalidMesh, describe(e)};
-    if (!positions && vertexCount > 0)
-        return {FairingStatus::InvalidMesh, "positions missing (null)"};
-    if (vertexCount == 0 || polygonCount == 0)
-        return {FairingStatus::NothingToDo, "no vertex or no polygon"};
-    if (passes == 0)
-        return {FairingStatus::NothingToDo, "zero passes requested"};
-    return {FairingStatus::Ok, "ok"};
+FairingStatus checkFairingInput(const PolygonMesh &mesh, int passes, const char **message) {
+    validate(mesh);
+    if (mesh.vertexCount == 0 || mesh.polygonCount == 0) {
+        *message = "no vertex or no polygon";
+        return FairingStatus::NothingToDo;
+    }
+    if (passes == 0) {
+        *message = "zero passes requested";
+        return FairingStatus::NothingToDo;
+    }
+    *message = "ok";
+    return FairingStatus::Ok;
 }
 
-FairingReport fairModifiedLanczos(glm::vec3 *positions, size_t vertexCount, const uint32_t *polygonOffsets,
-                                  const uint32_t *polygonIndices, size_t polygonCount,
-                                  const uint8_t *vertexSelected, const LanczosFairingOptions &options) {
+FairingReport fairModifiedLanczos(const MutablePolygonMesh &mesh, const uint8_t *vertexSelected,
+                                  const LanczosFairingOptions &options) {
     FairingReport report;
     auto finish = [&](FairingStatus status, const char *message) {
         report.status = status;
@@ -81,19 +80,18 @@ FairingReport fairModifiedLanczos(glm::vec3 *positions, size_t vertexCount, cons
     };
     if (!std::isfinite(options.lambda) || options.passes < 0 || !std::isfinite(options.voxelSize) ||
         options.voxelSize < 0.0f)
-        return finish(FairingStatus::InvalidOptions, "lambda and voxelSize must be finite, voxelSize and passes >= 0");
-    if (const auto [status, message] = checkFairingInput(positions, vertexCount, polygonOffsets, polygonIndices,
-                                                         polygonCount, options.passes);
+        throw OptionError("fairing: lambda and voxelSize must be finite, voxelSize and passes >= 0");
+    if (const FairingStatus status = checkFairingInput(mesh, options.passes, &report.message);
         status != FairingStatus::Ok)
-        return finish(status, message);
+        return finish(status, report.message);
 
+    glm::vec3 *const positions = mesh.positions;
+    const size_t vertexCount = mesh.vertexCount;
     for (size_t v = 0; v < vertexCount; ++v)
-        if (!std::isfinite(positions[v].x) || !std::isfinite(positions[v].y) || !std::isfinite(positions[v].z))
+        if (!isFinite(positions[v]))
             ++report.skippedVertices;
 
-    report.voxelSize = options.voxelSize > 0.0f
-                           ? options.voxelSize
-                           : detectVoxelSize(positions, vertexCount, polygonOffsets, polygonIndices, polygonCount);
+    report.voxelSize = options.voxelSize > 0.0f ? options.voxelSize : detectVoxelSize(mesh);
     if (!(report.voxelSize > 0.0f))
         return finish(FairingStatus::NothingToDo, "no polygon edge of non-zero finite length to take the voxel size from");
 
@@ -101,10 +99,7 @@ FairingReport fairModifiedLanczos(glm::vec3 *positions, size_t vertexCount, cons
     // fresh multi-megabyte arrays cost more in first-touch page faults than the pass itself.
     thread_local CsrAdjacency neighbours;
     thread_local std::vector<glm::vec3> previous;
-    if (PolygonMeshError e = buildVertexNeighbours(vertexCount, polygonOffsets, polygonIndices, polygonCount, neighbours);
-        e != PolygonMeshError::None)
-        return finish(FairingStatus::InvalidMesh, describe(e));
-
+    buildVertexNeighbours(mesh, neighbours);
     // Jacobi: every vertex of a pass reads the positions from before that pass.
     previous.assign(positions, positions + vertexCount);
     for (int pass = 0; pass < options.passes; ++pass) {

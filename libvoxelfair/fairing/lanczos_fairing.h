@@ -10,9 +10,8 @@
 // axis, a convex edge 0.268 on its two axes, a flat interior vertex not at all.
 #pragma once
 
-#include <utility>
-
-#include "fairing/polygon_adjacency.h"
+#include "mesh/csr_adjacency.h"
+#include "mesh/polygon_mesh.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -30,19 +29,16 @@ struct LanczosFairingOptions {
     float voxelSize = 0.0f;
 };
 
+// What a fairing call did. Invalid input is not a status: it throws (base/error.h).
 enum class FairingStatus {
     Ok,
-    NothingToDo,     // no vertex, no polygon, no pass or no edge of non-zero length: no change
-    InvalidMesh,     // bad offsets or indices: positions untouched
-    InvalidOptions,  // non-finite or negative option: positions untouched
+    NothingToDo,  // no vertex, no polygon, no pass or no edge of non-zero length: no change
 };
 
-// The input checks both fairing modes make before touching anything: valid polygons, positions
-// present, something to do. Returns Ok, or the status and a static message saying why not.
-std::pair<FairingStatus, const char *> checkFairingInput(const glm::vec3 *positions, size_t vertexCount,
-                                                         const uint32_t *polygonOffsets,
-                                                         const uint32_t *polygonIndices, size_t polygonCount,
-                                                         int passes);
+// The input checks both fairing modes make before touching anything. Throws MeshError when the
+// mesh is invalid (mesh/polygon_mesh.h validate()); returns NothingToDo with a static message
+// saying why when there is nothing to smooth, else Ok.
+FairingStatus checkFairingInput(const PolygonMesh &mesh, int passes, const char **message);
 
 struct FairingReport {
     FairingStatus status = FairingStatus::Ok;
@@ -52,17 +48,15 @@ struct FairingReport {
     size_t movedVertices = 0;    // vertices the last pass moved by more than 1e-6 voxel
     size_t skippedVertices = 0;  // vertices with non-finite coordinates: never moved, never neighbours
     float maxDisplacement = 0.0f;  // longest move of one vertex in one pass, in position units
-
-    bool failed() const { return status == FairingStatus::InvalidMesh || status == FairingStatus::InvalidOptions; }
 };
 
-// Smooths `positions` in place. Polygons as in polygon_adjacency.h (polygonOffsets has
-// polygonCount + 1 entries). With `vertexSelected` (nullable, one byte per vertex), only
-// vertices with a non-zero byte move; the others still act as neighbours. Never produces NaN:
-// non-finite vertices are skipped and ignored as neighbours, coincident neighbours are ignored.
-FairingReport fairModifiedLanczos(glm::vec3 *positions, size_t vertexCount, const uint32_t *polygonOffsets,
-                                  const uint32_t *polygonIndices, size_t polygonCount,
-                                  const uint8_t *vertexSelected, const LanczosFairingOptions &options = {});
+// Smooths the mesh's positions in place. With `vertexSelected` (nullable, one byte per vertex),
+// only vertices with a non-zero byte move; the others still act as neighbours. Never produces
+// NaN: non-finite vertices are skipped and ignored as neighbours, coincident neighbours are
+// ignored. Throws MeshError for an invalid mesh and OptionError for options out of range, before
+// touching anything.
+FairingReport fairModifiedLanczos(const MutablePolygonMesh &mesh, const uint8_t *vertexSelected,
+                                  const LanczosFairingOptions &options = {});
 
 struct FairingPassStats {
     size_t movedVertices = 0;

@@ -9,8 +9,10 @@
 
 namespace voxelfair {
 
-float detectVoxelSize(const glm::vec3 *positions, size_t vertexCount, const uint32_t *polygonOffsets,
-                      const uint32_t *polygonIndices, size_t polygonCount) {
+float detectVoxelSize(const PolygonMesh &mesh) {
+    const glm::vec3 *const positions = mesh.positions;
+    const size_t vertexCount = mesh.vertexCount, polygonCount = mesh.polygonCount;
+    const uint32_t *const polygonOffsets = mesh.polygonOffsets, *const polygonIndices = mesh.polygonIndices;
     constexpr size_t kMaxEdges = size_t(1) << 16;
     if (!positions || !polygonOffsets || !polygonIndices || polygonCount == 0)
         return 0.0f;

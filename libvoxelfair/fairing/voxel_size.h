@@ -2,6 +2,8 @@
 // smooths a scaled model exactly as the unscaled one.
 #pragma once
 
+#include "mesh/polygon_mesh.h"
+
 #include <cstddef>
 #include <cstdint>
 
@@ -15,7 +17,7 @@ namespace voxelfair {
 // edges are the consecutive vertex pairs (not the quad diagonals). Only every k-th polygon is
 // measured, k chosen for about 65536 edges, so the cost stays bounded on big meshes. Edges of
 // zero or non-finite length and indices out of range are ignored; returns 0 when no edge is left.
-float detectVoxelSize(const glm::vec3 *positions, size_t vertexCount, const uint32_t *polygonOffsets,
-                      const uint32_t *polygonIndices, size_t polygonCount);
+// Never throws: a mesh with missing arrays gives 0.
+float detectVoxelSize(const PolygonMesh &mesh);
 
 }  // namespace voxelfair

@@ -198,6 +198,8 @@ struct QuadMesh {
 
     size_t quadCount() const { return quads.size() / 4; }
     size_t vertexCount() const { return positions.size(); }
+    PolygonMesh view() const { return polygonMesh(positions, offsets, quads); }
+    MutablePolygonMesh mutableView() { return mutablePolygonMesh(positions, offsets, quads); }
 };
 
 inline QuadMesh extract(const VoxelScene &scene) {
@@ -213,8 +215,7 @@ inline QuadMesh extract(const VoxelScene &scene) {
         mesh.quadColours.emplace_back(c.r, c.g, c.b);
     for (size_t part = 0; part < surface.partQuadCounts.size(); ++part)
         mesh.quadPart.insert(mesh.quadPart.end(), surface.partQuadCounts[part], uint32_t(part));
-    const float size = detectVoxelSize(mesh.positions.data(), mesh.positions.size(), mesh.offsets.data(),
-                                       mesh.quads.data(), mesh.quadCount());
+    const float size = detectVoxelSize(mesh.view());
     mesh.voxelSize = size > 0.0f ? size : 1.0f;
     return mesh;
 }
@@ -223,16 +224,14 @@ inline QuadMesh extract(const VoxelScene &scene) {
 inline FairingReport fair(QuadMesh &mesh, LanczosFairingOptions options = {}) {
     if (options.voxelSize == 0.0f)
         options.voxelSize = mesh.voxelSize;
-    return fairModifiedLanczos(mesh.positions.data(), mesh.positions.size(), mesh.offsets.data(), mesh.quads.data(),
-                               mesh.quadCount(), nullptr, options);
+    return fairModifiedLanczos(mesh.mutableView(), nullptr, options);
 }
 
 // The constrained mode (default options) in place of the paper's fairing.
 inline ConstrainedFairingReport fairConstrainedMode(QuadMesh &mesh, ConstrainedFairingOptions options = {}) {
     if (options.voxelSize == 0.0f)
         options.voxelSize = mesh.voxelSize;
-    return fairConstrained(mesh.positions.data(), mesh.positions.size(), mesh.offsets.data(), mesh.quads.data(),
-                           mesh.quadCount(), nullptr, options);
+    return fairConstrained(mesh.mutableView(), nullptr, options);
 }
 
 // Section 4.4's output, on the (faired) quad mesh's vertices.
@@ -252,25 +251,23 @@ inline Attributes smoothAttributes(const QuadMesh &mesh) {
     Attributes a;
     a.quadNormals.resize(quads);
     a.vertexNormals.resize(vertices);
-    computePolygonNormals(mesh.positions.data(), vertices, mesh.offsets.data(), mesh.quads.data(), quads,
-                          a.quadNormals.data());
-    computeVertexNormals(vertices, mesh.offsets.data(), mesh.quads.data(), quads, a.quadNormals.data(),
-                         a.vertexNormals.data());
+    PolygonMesh view = mesh.view();
+    computePolygonNormals(view, a.quadNormals.data());
+    computeVertexNormals(view, a.quadNormals.data(), a.vertexNormals.data());
 
     std::vector<glm::vec4> quadColours(quads), vertexColours(vertices);
     for (size_t q = 0; q < quads; ++q)
         quadColours[q] = glm::vec4(glm::vec3(mesh.quadColours[q]), 255.0f);
-    computeVertexColours(vertices, mesh.offsets.data(), mesh.quads.data(), quads, quadColours.data(),
-                         vertexColours.data());
+    view.polygonColours = quadColours.data();
+    computeVertexColours(view, vertexColours.data());
     a.vertexColours.resize(vertices);
     for (size_t v = 0; v < vertices; ++v)
         a.vertexColours[v] = glm::u8vec3(glm::clamp(glm::round(glm::vec3(vertexColours[v])), 0.0f, 255.0f));
 
-    const size_t triangles = countFanTriangles(mesh.offsets.data(), quads);
+    const size_t triangles = countFanTriangles(view);
     a.triangles.resize(3 * triangles);
     a.triangleQuad.resize(triangles);
-    triangulatePolygons(vertices, mesh.offsets.data(), mesh.quads.data(), quads, a.triangles.data(),
-                        a.triangleQuad.data());
+    triangulatePolygons(view, a.triangles.data(), a.triangleQuad.data());
     a.triangleColours.resize(triangles);
     for (size_t t = 0; t < triangles; ++t)
         a.triangleColours[t] = mesh.quadColours[a.triangleQuad[t]];

@@ -106,9 +106,8 @@ inline std::vector<Row> compare(const shapes::Shape &shape, const Options &optio
     std::vector<uint32_t> offsets(quadCount + 1);
     for (size_t q = 0; q <= quadCount; ++q)
         offsets[q] = uint32_t(4 * q);
-    std::vector<uint32_t> triangles(3 * countFanTriangles(offsets.data(), quadCount));
-    triangulatePolygons(surface.positions.size(), offsets.data(), surface.quads.data(), quadCount,
-                        triangles.data(), nullptr);
+    std::vector<uint32_t> triangles(3 * countFanTriangles({nullptr, 0, offsets.data(), nullptr, quadCount}));
+    triangulatePolygons({nullptr, surface.positions.size(), offsets.data(), surface.quads.data(), quadCount}, triangles.data(), nullptr);
 
     std::vector<Row> rows;
     auto measure = [&](const char *method, const std::vector<glm::vec3> &positions) {
@@ -117,7 +116,7 @@ inline std::vector<Row> compare(const shapes::Shape &shape, const Options &optio
     measure(kRawMethod, surface.positions);
 
     std::vector<glm::vec3> faired = surface.positions;
-    fairModifiedLanczos(faired.data(), faired.size(), offsets.data(), surface.quads.data(), quadCount, nullptr);
+    fairModifiedLanczos({faired.data(), faired.size(), offsets.data(), surface.quads.data(), quadCount}, nullptr);
     measure(kPaperMethod, faired);
 
 #ifdef VOXELFAIR_HAVE_VCGLIB
@@ -144,7 +143,7 @@ inline std::vector<Row> compare(const shapes::Shape &shape, const Options &optio
 #endif
 
     std::vector<glm::vec3> constrained = surface.positions;
-    fairConstrained(constrained.data(), constrained.size(), offsets.data(), surface.quads.data(), quadCount, nullptr);
+    fairConstrained({constrained.data(), constrained.size(), offsets.data(), surface.quads.data(), quadCount}, nullptr);
     measure(kConstrainedMethod, constrained);
     return rows;
 }

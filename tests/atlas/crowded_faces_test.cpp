@@ -32,7 +32,7 @@ TestMesh paperFaired(TestMesh m, int passes = 1) {
     options.passes = passes;
     options.voxelSize = 1.0f;
     const FairingReport report =
-        fairModifiedLanczos(m.positions.data(), m.positions.size(), offsets.data(), indices.data(), quads, nullptr, options);
+        fairModifiedLanczos({m.positions.data(), m.positions.size(), offsets.data(), indices.data(), quads}, nullptr, options);
     EXPECT_EQ(report.status, FairingStatus::Ok) << report.message;
     m.name += " paper" + std::to_string(passes);
     return m;

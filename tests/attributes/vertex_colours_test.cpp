@@ -1,4 +1,5 @@
 #include "attributes/vertex_colours.h"
+#include "base/error.h"
 
 #include "attributes/triangulate.h"
 
@@ -22,8 +23,7 @@ TEST(AttributesVertexColours, MeanOverAdjacentPolygonsNotTriangles) {
     const std::vector<uint32_t> quads = {0, 1, 2, 3, 1, 4, 5, 2};
     const glm::vec4 faceColours[] = {kRed, kBlue};
     std::vector<glm::vec4> colours(7);
-    ASSERT_EQ(computeVertexColours(7, offsets.data(), quads.data(), 2, faceColours, colours.data()),
-              PolygonMeshError::None);
+    ASSERT_NO_THROW(computeVertexColours({nullptr, 7, offsets.data(), quads.data(), 2, faceColours}, colours.data()));
     EXPECT_EQ(colours[0], kRed);
     EXPECT_EQ(colours[3], kRed);
     EXPECT_EQ(colours[4], kBlue);
@@ -33,12 +33,12 @@ TEST(AttributesVertexColours, MeanOverAdjacentPolygonsNotTriangles) {
 
     // The same on the triangles (colours carried by the triangle -> polygon map) over-weights A.
     std::vector<uint32_t> triangles(12), toPolygon(4), triangleOffsets = {0, 3, 6, 9, 12};
-    triangulatePolygons(7, offsets.data(), quads.data(), 2, triangles.data(), toPolygon.data());
+    triangulatePolygons({nullptr, 7, offsets.data(), quads.data(), 2}, triangles.data(), toPolygon.data());
     std::vector<glm::vec4> triangleColours;
     for (uint32_t p : toPolygon)
         triangleColours.push_back(faceColours[p]);
     std::vector<glm::vec4> perTriangle(7);
-    computeVertexColours(7, triangleOffsets.data(), triangles.data(), 4, triangleColours.data(), perTriangle.data());
+    computeVertexColours({nullptr, 7, triangleOffsets.data(), triangles.data(), 4, triangleColours.data()}, perTriangle.data());
     EXPECT_NEAR(perTriangle[2].x, 2.0f / 3.0f, 1e-6f);
 }
 
@@ -47,8 +47,8 @@ TEST(AttributesVertexColours, PolygonRepeatingAVertexCountsOnce) {
     const uint32_t indices[] = {0, 1, 0, 2, 0, 3, 4};
     const glm::vec4 faceColours[] = {kRed, kBlue};
     glm::vec4 colours[5];
-    ASSERT_EQ(computeVertexColours(5, offsets, indices, 2, faceColours, colours), PolygonMeshError::None);
+    ASSERT_NO_THROW(computeVertexColours({nullptr, 5, offsets, indices, 2, faceColours}, colours));
     EXPECT_EQ(colours[0], (kRed + kBlue) * 0.5f);
     const uint32_t bad[] = {0, 1, 0, 2, 0, 3, 5};
-    EXPECT_EQ(computeVertexColours(5, offsets, bad, 2, faceColours, colours), PolygonMeshError::IndexOutOfRange);
+    EXPECT_THROW(computeVertexColours({nullptr, 5, offsets, bad, 2, faceColours}, colours), MeshError);
 }

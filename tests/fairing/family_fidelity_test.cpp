@@ -85,17 +85,16 @@ Measured measure(const shapes::Shape &shape) {
     std::vector<uint32_t> offsets(quadCount + 1);
     for (size_t q = 0; q <= quadCount; ++q)
         offsets[q] = uint32_t(4 * q);
-    std::vector<uint32_t> triangles(3 * countFanTriangles(offsets.data(), quadCount));
-    triangulatePolygons(surface.positions.size(), offsets.data(), surface.quads.data(), quadCount, triangles.data(),
-                        nullptr);
+    std::vector<uint32_t> triangles(3 * countFanTriangles({nullptr, 0, offsets.data(), nullptr, quadCount}));
+    triangulatePolygons({nullptr, surface.positions.size(), offsets.data(), surface.quads.data(), quadCount}, triangles.data(), nullptr);
     const size_t samples = 20000;
     Measured m;
     m.raw = shapes::measureSurfaceError(surface.positions, triangles, shape, samples);
     std::vector<glm::vec3> positions = surface.positions;
-    fairModifiedLanczos(positions.data(), positions.size(), offsets.data(), surface.quads.data(), quadCount, nullptr);
+    fairModifiedLanczos({positions.data(), positions.size(), offsets.data(), surface.quads.data(), quadCount}, nullptr);
     m.paper = shapes::measureSurfaceError(positions, triangles, shape, samples);
     positions = surface.positions;
-    fairConstrained(positions.data(), positions.size(), offsets.data(), surface.quads.data(), quadCount, nullptr);
+    fairConstrained({positions.data(), positions.size(), offsets.data(), surface.quads.data(), quadCount}, nullptr);
     m.ours = shapes::measureSurfaceError(positions, triangles, shape, samples);
 #ifdef VOXELFAIR_HAVE_VTK
     const vtksinc::TriangleMesh vtk = vtksinc::smoothLikeVtk(volume);
@@ -173,8 +172,7 @@ TEST(FairingFamilies, PlaneStageFindsFlatFacesAndNoneOnSpheres) {
         for (size_t q = 0; q < offsets.size(); ++q)
             offsets[q] = uint32_t(4 * q);
         std::vector<glm::vec3> positions = surface.positions;
-        return fairConstrained(positions.data(), positions.size(), offsets.data(), surface.quads.data(),
-                               surface.quadCount(), nullptr, options);
+        return fairConstrained({positions.data(), positions.size(), offsets.data(), surface.quads.data(), surface.quadCount()}, nullptr, options);
     };
     size_t boxPlanes = 0;
     for (const shapes::FamilyShape &s : shapes::familyShapes(kInstances))
@@ -195,14 +193,12 @@ TEST(FairingFamilies, PlaneStageFindsFlatFacesAndNoneOnSpheres) {
         std::vector<uint32_t> offsets(surface.quadCount() + 1);
         for (size_t q = 0; q < offsets.size(); ++q)
             offsets[q] = uint32_t(4 * q);
-        std::vector<uint32_t> triangles(3 * countFanTriangles(offsets.data(), surface.quadCount()));
-        triangulatePolygons(surface.positions.size(), offsets.data(), surface.quads.data(), surface.quadCount(),
-                            triangles.data(), nullptr);
+        std::vector<uint32_t> triangles(3 * countFanTriangles({nullptr, 0, offsets.data(), nullptr, surface.quadCount()}));
+        triangulatePolygons({nullptr, surface.positions.size(), offsets.data(), surface.quads.data(), surface.quadCount()}, triangles.data(), nullptr);
         std::vector<glm::vec3> positions = surface.positions;
         ConstrainedFairingOptions options;
         options.fitPlanes = withPlanes != 0;
-        fairConstrained(positions.data(), positions.size(), offsets.data(), surface.quads.data(), surface.quadCount(),
-                        nullptr, options);
+        fairConstrained({positions.data(), positions.size(), offsets.data(), surface.quads.data(), surface.quadCount()}, nullptr, options);
         rms[withPlanes] = shapes::measureSurfaceError(positions, triangles, large, 20000).rms;
     }
     EXPECT_LE(rms[1], rms[0] + 0.005) << "planes on a sphere of radius 40";

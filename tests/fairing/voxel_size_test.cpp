@@ -11,7 +11,7 @@ using namespace voxelfair;
 namespace {
 
 float detect(const shapes::QuadMesh &m) {
-    return detectVoxelSize(m.positions.data(), m.positions.size(), m.offsets.data(), m.indices.data(), m.quadCount());
+    return detectVoxelSize({m.positions.data(), m.positions.size(), m.offsets.data(), m.indices.data(), m.quadCount()});
 }
 
 }  // namespace
@@ -33,12 +33,12 @@ TEST(FairingVoxelSize, IgnoresMinorityLengthsDegenerateEdgesAndBadValues) {
 }
 
 TEST(FairingVoxelSize, ZeroWhenNothingToMeasure) {
-    EXPECT_EQ(detectVoxelSize(nullptr, 0, nullptr, nullptr, 0), 0.0f);
+    EXPECT_EQ(detectVoxelSize({nullptr, 0, nullptr, nullptr, 0}), 0.0f);
     const glm::vec3 same[] = {glm::vec3(1.0f), glm::vec3(1.0f), glm::vec3(1.0f)};
     const uint32_t offsets[] = {0, 3};
     const uint32_t tri[] = {0, 1, 2};
-    EXPECT_EQ(detectVoxelSize(same, 3, offsets, tri, 1), 0.0f);
+    EXPECT_EQ(detectVoxelSize({same, 3, offsets, tri, 1}), 0.0f);
     const uint32_t outOfRange[] = {0, 1, 7};
     const glm::vec3 p[] = {glm::vec3(0.0f), glm::vec3(2.0f, 0.0f, 0.0f), glm::vec3(0.0f)};
-    EXPECT_EQ(detectVoxelSize(p, 3, offsets, outOfRange, 1), 2.0f);  // the one valid edge
+    EXPECT_EQ(detectVoxelSize({p, 3, offsets, outOfRange, 1}), 2.0f);  // the one valid edge
 }

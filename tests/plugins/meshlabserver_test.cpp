@@ -250,8 +250,7 @@ TEST(MeshlabServer, FairingFilterMatchesTheHostFreeUnit) {
     SceneSurface expected = expectedSurface(tank);
     std::vector<uint32_t> offsets(expected.quadCount() + 1);
     for (size_t q = 0; q < offsets.size(); ++q) offsets[q] = uint32_t(4 * q);
-    const FairingReport report = fairModifiedLanczos(expected.positions.data(), expected.positions.size(), offsets.data(),
-                                                     expected.quads.data(), expected.quadCount(), nullptr);
+    const FairingReport report = fairModifiedLanczos({expected.positions.data(), expected.positions.size(), offsets.data(), expected.quads.data(), expected.quadCount()}, nullptr);
     ASSERT_EQ(report.status, FairingStatus::Ok);
     ASSERT_GT(report.movedVertices, expected.positions.size() / 4);
 
@@ -276,8 +275,7 @@ TEST(MeshlabServer, AttributeSmoothingGivesVertexColoursAndNormals) {
     std::vector<glm::vec4> quadColours(expected.quadCount()), vertexColours(expected.positions.size());
     for (size_t q = 0; q < quadColours.size(); ++q)
         quadColours[q] = glm::vec4(expected.quadColours[q].r, expected.quadColours[q].g, expected.quadColours[q].b, 255);
-    computeVertexColours(expected.positions.size(), offsets.data(), expected.quads.data(), expected.quadCount(),
-                         quadColours.data(), vertexColours.data());
+    computeVertexColours({nullptr, expected.positions.size(), offsets.data(), expected.quads.data(), expected.quadCount(), quadColours.data()}, vertexColours.data());
 
     const std::string dir = makeTempDir();
     const MeshlabRun run = runMeshlabServer({"-i", tank, "-o", dir + "/out.ply", "-m", "vc", "vn", "sa", "-s",

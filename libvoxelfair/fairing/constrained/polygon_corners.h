@@ -1,7 +1,7 @@
 // Polygon connectivity by corners, the indexing every stage of the constrained fairing walks.
 //
 // Contract: corner c is polygonIndices[c] and stands for the edge from that vertex to the next
-// vertex of its polygon (polygons as in polygon_adjacency.h: polygonOffsets has polygonCount + 1
+// vertex of its polygon (polygons as in mesh/polygon_mesh.h: polygonOffsets has polygonCount + 1
 // entries). With kQuads (every polygon a quad: the voxel surface) a corner's polygon, next,
 // previous and opposite corners follow from c itself; otherwise from a corner -> polygon table.
 // oppositeCorner is only meaningful in a quad (inQuad). areaNormal is the unit normal from the

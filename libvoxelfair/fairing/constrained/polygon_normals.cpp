@@ -98,7 +98,7 @@ VOXELFAIR_NOINLINE bool findNormals(FairingState<kQuads> &s) {
     else if (oneLength && edgeLength2 > 0.0f && std::isfinite(std::sqrt(edgeLength2)))
         s.report.voxelSize = std::sqrt(edgeLength2);
     else
-        s.report.voxelSize = detectVoxelSize(s.input, s.V, s.offsets, s.indices, s.P);
+        s.report.voxelSize = detectVoxelSize(PolygonMesh{s.input, s.V, s.offsets, s.indices, s.P});
     if (!(s.report.voxelSize > 0.0f)) {
         s.report.status = FairingStatus::NothingToDo;
         s.report.message = "no polygon edge of non-zero finite length to take the voxel size from";

@@ -16,6 +16,7 @@
 #include <glm/vec3.hpp>
 
 #include "fairing/simd_variant.h"
+#include "mesh/vector_helpers.h"
 
 #ifdef VOXELFAIR_SSE2
 #include <emmintrin.h>
@@ -32,15 +33,9 @@
 namespace voxelfair::constrained {
 inline namespace VOXELFAIR_SIMD_VARIANT {
 
-[[maybe_unused]] inline bool isFinite(const glm::vec3 &p) {
-    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-}
-
-inline glm::vec3 normalizedOrZero(const glm::vec3 &v) {
-    const float length2 = glm::dot(v, v);
-    return length2 > 0.0f && length2 <= std::numeric_limits<float>::max() ? v * (1.0f / std::sqrt(length2))
-                                                                            : glm::vec3(0.0f);
-}
+// The shared helpers (mesh/vector_helpers.h): the SSE2 kernels below reproduce normalizedOrZero.
+using voxelfair::isFinite;
+using voxelfair::normalizedOrZero;
 
 #ifdef VOXELFAIR_SSE2
 // glm::vec3 in a register (w = 0) and back, 12 bytes each way.

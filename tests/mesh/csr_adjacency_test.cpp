@@ -1,4 +1,5 @@
-#include "fairing/polygon_adjacency.h"
+#include "mesh/csr_adjacency.h"
+#include "base/error.h"
 
 #include "shapes/box_lattice.h"
 
@@ -14,34 +15,33 @@ std::vector<uint32_t> row(const CsrAdjacency &csr, size_t v) { return {csr.begin
 
 }  // namespace
 
-TEST(FairingVertexNeighbours, QuadMakesEveryOtherVertexANeighbourDiagonalsIncluded) {
+TEST(MeshVertexNeighbours, QuadMakesEveryOtherVertexANeighbourDiagonalsIncluded) {
     const uint32_t offsets[] = {0, 4};
     const uint32_t quad[] = {0, 1, 2, 3};
     CsrAdjacency n;
-    ASSERT_EQ(buildVertexNeighbours(4, offsets, quad, 1, n), PolygonMeshError::None);
+    ASSERT_NO_THROW(buildVertexNeighbours({nullptr, 4, offsets, quad, 1}, n));
     EXPECT_EQ(row(n, 0), (std::vector<uint32_t>{1, 2, 3}));
     EXPECT_EQ(row(n, 2), (std::vector<uint32_t>{0, 1, 3}));
 }
 
-TEST(FairingVertexNeighbours, FlatLatticeVertexHasEightNeighbours) {
+TEST(MeshVertexNeighbours, FlatLatticeVertexHasEightNeighbours) {
     // The middle of a 4x4-voxel box face: 4 edge + 4 diagonal neighbours (doc/method.md §3);
     // a box corner has 3 edge + 3 diagonal neighbours.
     const shapes::QuadMesh box = shapes::boxLattice(4, 4, 4);
     CsrAdjacency n;
-    ASSERT_EQ(buildVertexNeighbours(box.positions.size(), box.offsets.data(), box.indices.data(), box.quadCount(), n),
-              PolygonMeshError::None);
+    ASSERT_NO_THROW(buildVertexNeighbours({nullptr, box.positions.size(), box.offsets.data(), box.indices.data(), box.quadCount()}, n));
     EXPECT_EQ(n.size(box.find(2, 2, 4)), 8u);
     EXPECT_EQ(n.size(box.find(0, 0, 0)), 6u);
     EXPECT_EQ(n.size(box.find(2, 0, 0)), 8u);  // edge: 4 + 4, shared vertices counted once
 }
 
-TEST(FairingVertexNeighbours, MixedPolygonsRepeatedAndIsolatedVertices) {
+TEST(MeshVertexNeighbours, MixedPolygonsRepeatedAndIsolatedVertices) {
     // Triangle (0,1,2), quad (1,2,3,4) sharing edge 1-2, a polygon repeating vertex 5, and an
     // isolated vertex 6, a 2-gon and an empty polygon.
     const uint32_t offsets[] = {0, 3, 7, 10, 12, 12};
     const uint32_t indices[] = {0, 1, 2, 1, 2, 3, 4, 5, 0, 5, 3, 4};
     CsrAdjacency n;
-    ASSERT_EQ(buildVertexNeighbours(7, offsets, indices, 5, n), PolygonMeshError::None);
+    ASSERT_NO_THROW(buildVertexNeighbours({nullptr, 7, offsets, indices, 5}, n));
     EXPECT_EQ(row(n, 1), (std::vector<uint32_t>{0, 2, 3, 4}));
     EXPECT_EQ(row(n, 5), (std::vector<uint32_t>{0}));  // never its own neighbour
     EXPECT_EQ(row(n, 0), (std::vector<uint32_t>{1, 2, 5}));
@@ -49,27 +49,26 @@ TEST(FairingVertexNeighbours, MixedPolygonsRepeatedAndIsolatedVertices) {
     EXPECT_TRUE(row(n, 6).empty());
 }
 
-TEST(FairingVertexNeighbours, ReportsBadInputAndLeavesOutputEmpty) {
+TEST(MeshVertexNeighbours, ReportsBadInputAndLeavesOutputEmpty) {
     CsrAdjacency n;
     const uint32_t offsets[] = {0, 4};
     const uint32_t outOfRange[] = {0, 1, 2, 9};
-    EXPECT_EQ(buildVertexNeighbours(4, offsets, outOfRange, 1, n), PolygonMeshError::IndexOutOfRange);
+    EXPECT_THROW(buildVertexNeighbours({nullptr, 4, offsets, outOfRange, 1}, n), MeshError);
     EXPECT_EQ(n.rowCount(), 0u);
     const uint32_t decreasing[] = {0, 4, 2};
     const uint32_t quad[] = {0, 1, 2, 3};
-    EXPECT_EQ(buildVertexNeighbours(4, decreasing, quad, 2, n), PolygonMeshError::BadOffsets);
+    EXPECT_THROW(buildVertexNeighbours({nullptr, 4, decreasing, quad, 2}, n), MeshError);
     const uint32_t notFromZero[] = {1, 4};
-    EXPECT_EQ(buildVertexNeighbours(4, notFromZero, quad, 1, n), PolygonMeshError::BadOffsets);
-    EXPECT_EQ(buildVertexNeighbours(4, nullptr, nullptr, 1, n), PolygonMeshError::MissingArray);
-    EXPECT_EQ(buildVertexNeighbours(0, nullptr, nullptr, 0, n), PolygonMeshError::None);
+    EXPECT_THROW(buildVertexNeighbours({nullptr, 4, notFromZero, quad, 1}, n), MeshError);
+    EXPECT_THROW(buildVertexNeighbours({nullptr, 4, nullptr, nullptr, 1}, n), MeshError);
+    EXPECT_NO_THROW(buildVertexNeighbours({nullptr, 0, nullptr, nullptr, 0}, n));
     EXPECT_EQ(n.rowCount(), 0u);
 }
 
-TEST(FairingVertexPolygons, ListsEachPolygonOnceInOrder) {
+TEST(MeshVertexPolygons, ListsEachPolygonOnceInOrder) {
     const uint32_t offsets[] = {0, 3, 7, 10};
     const uint32_t indices[] = {0, 1, 2, 1, 2, 3, 4, 5, 0, 5};
-    CsrAdjacency p;
-    ASSERT_EQ(buildVertexPolygons(7, offsets, indices, 3, p), PolygonMeshError::None);
+    const CsrAdjacency p = buildVertexPolygons({nullptr, 7, offsets, indices, 3});
     EXPECT_EQ(row(p, 1), (std::vector<uint32_t>{0, 1}));
     EXPECT_EQ(row(p, 5), (std::vector<uint32_t>{2}));
     EXPECT_EQ(row(p, 0), (std::vector<uint32_t>{0, 2}));

@@ -1,7 +1,10 @@
-#include "fairing/polygon_adjacency.h"
+#include "mesh/csr_adjacency.h"
+
+#include "base/error.h"
 
 #include <algorithm>
 #include <limits>
+#include <string>
 
 namespace voxelfair {
 
@@ -39,48 +42,13 @@ bool prefixSum(std::vector<uint32_t> &offsets, const std::vector<uint64_t> &coun
 
 }  // namespace
 
-const char *describe(PolygonMeshError error) {
-    switch (error) {
-    case PolygonMeshError::None: return "ok";
-    case PolygonMeshError::TooManyVertices: return "too many vertices or adjacencies for 32-bit indices";
-    case PolygonMeshError::BadOffsets: return "polygon offsets must start at 0 and never decrease";
-    case PolygonMeshError::IndexOutOfRange: return "a polygon uses a vertex index out of range";
-    case PolygonMeshError::MissingArray: return "polygon offsets or indices missing (null)";
-    }
-    return "unknown error";
-}
-
-PolygonMeshError validatePolygons(size_t vertexCount, const uint32_t *polygonOffsets,
-                                  const uint32_t *polygonIndices, size_t polygonCount) {
-    if (vertexCount > kMaxIndex)
-        return PolygonMeshError::TooManyVertices;
-    if (polygonCount == 0)
-        return PolygonMeshError::None;
-    if (!polygonOffsets)
-        return PolygonMeshError::MissingArray;
-    if (polygonOffsets[0] != 0)
-        return PolygonMeshError::BadOffsets;
-    for (size_t p = 0; p < polygonCount; ++p)
-        if (polygonOffsets[p + 1] < polygonOffsets[p])
-            return PolygonMeshError::BadOffsets;
-    const uint32_t indexCount = polygonOffsets[polygonCount];
-    if (indexCount > 0 && !polygonIndices)
-        return PolygonMeshError::MissingArray;
-    for (uint32_t i = 0; i < indexCount; ++i)
-        if (polygonIndices[i] >= vertexCount)
-            return PolygonMeshError::IndexOutOfRange;
-    return PolygonMeshError::None;
-}
-
-PolygonMeshError buildVertexNeighbours(size_t vertexCount, const uint32_t *polygonOffsets,
-                                       const uint32_t *polygonIndices, size_t polygonCount,
-                                       CsrAdjacency &out) {
+void buildVertexNeighbours(const PolygonMesh &mesh, CsrAdjacency &out) {
     // Cleared, not freed: a caller that keeps `out` reuses its memory on the next build.
     out.offsets.clear();
     out.items.clear();
-    if (PolygonMeshError e = validatePolygons(vertexCount, polygonOffsets, polygonIndices, polygonCount);
-        e != PolygonMeshError::None)
-        return e;
+    validatePolygons(mesh);
+    const size_t vertexCount = mesh.vertexCount, polygonCount = mesh.polygonCount;
+    const uint32_t *const polygonOffsets = mesh.polygonOffsets, *const polygonIndices = mesh.polygonIndices;
 
     // Reserve (arity - 1) slots per incidence, fill all pairs, then sort and dedupe each row:
     // cheaper than a set per vertex, and rows are short (about 12 before dedupe on quads).
@@ -95,7 +63,7 @@ PolygonMeshError buildVertexNeighbours(size_t vertexCount, const uint32_t *polyg
     out.offsets.assign(vertexCount + 1, 0);
     if (!prefixSum(out.offsets, counts)) {
         out = {};
-        return PolygonMeshError::TooManyVertices;
+        throw MeshError("more vertex adjacencies than 32-bit offsets can address");
     }
     out.items.resize(out.offsets[vertexCount]);
 
@@ -121,18 +89,15 @@ PolygonMeshError buildVertexNeighbours(size_t vertexCount, const uint32_t *polyg
         cursor[v] = uint32_t(rowEnd - out.items.data());
     }
     compactRows(out, cursor);
-    return PolygonMeshError::None;
 }
 
-PolygonMeshError buildVertexPolygons(size_t vertexCount, const uint32_t *polygonOffsets,
-                                     const uint32_t *polygonIndices, size_t polygonCount,
-                                     CsrAdjacency &out) {
-    out = {};
-    if (PolygonMeshError e = validatePolygons(vertexCount, polygonOffsets, polygonIndices, polygonCount);
-        e != PolygonMeshError::None)
-        return e;
+CsrAdjacency buildVertexPolygons(const PolygonMesh &mesh) {
+    CsrAdjacency out;
+    validatePolygons(mesh);
+    const size_t vertexCount = mesh.vertexCount, polygonCount = mesh.polygonCount;
+    const uint32_t *const polygonOffsets = mesh.polygonOffsets, *const polygonIndices = mesh.polygonIndices;
     if (polygonCount > kMaxIndex)
-        return PolygonMeshError::TooManyVertices;
+        throw MeshError(std::to_string(polygonCount) + " polygons: more than 32-bit indices can address");
 
     std::vector<uint64_t> counts(vertexCount, 0);
     const uint32_t indexCount = polygonCount ? polygonOffsets[polygonCount] : 0;
@@ -157,7 +122,7 @@ PolygonMeshError buildVertexPolygons(size_t vertexCount, const uint32_t *polygon
     }
     if (repeated)
         compactRows(out, cursor);
-    return PolygonMeshError::None;
+    return out;
 }
 
 }  // namespace voxelfair
