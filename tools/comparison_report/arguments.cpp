@@ -41,8 +41,10 @@ bool parseArguments(int argc, char **argv, const fs::path &defaultFolder, Argume
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--size") == 0 && i + 1 < argc)
             out.size = std::max(64, std::atoi(argv[++i]));
+        else if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc)
+            out.only = argv[++i];
         else if (argv[i][0] == '-') {
-            std::fprintf(stderr, "usage: %s [output folder] [--size pixels]\n", argv[0]);
+            std::fprintf(stderr, "usage: %s [output folder] [--size pixels] [--only MODEL]\n", argv[0]);
             return false;
         } else
             out.folder = argv[i];
@@ -50,13 +52,23 @@ bool parseArguments(int argc, char **argv, const fs::path &defaultFolder, Argume
     return true;
 }
 
-Inputs loadInputs(const fs::path &models, const std::vector<shapes::Shape> &shapeList) {
+Inputs loadInputs(const fs::path &models, const std::vector<shapes::Shape> &shapeList, const std::string &only) {
     Inputs result;
     std::vector<Input> &inputs = result.inputs;
     std::vector<std::string> &skipped = result.skipped;
     for (const std::string &path : sortedFiles(models / "vxl", ".vxl")) {
+        // A unit is shown whole under its body's name: its turret and barrel files not again.
+        const std::string stem = fs::path(path).stem().string();
+        bool companion = false;
+        for (const char *suffix : {"tur", "barl"}) {
+            const size_t n = std::strlen(suffix);
+            companion = companion || (stem.size() > n && stem.compare(stem.size() - n, n, suffix) == 0 &&
+                                      fs::exists(fs::path(path).parent_path() / (stem.substr(0, stem.size() - n) + ".vxl")));
+        }
+        if (companion)
+            continue;
         try {
-            Input in{pipeline::loadVxl(path, (models / "pal").string()), "VXL"};
+            Input in{pipeline::loadVxl(path, (models / "pal").string(), true), "VXL"};
             if (in.model->solidVoxels() < kMinSolidVoxels)
                 skipped.push_back(format("%s (%zu voxels)", in.model->name.c_str(), in.model->solidVoxels()));
             else
@@ -80,6 +92,9 @@ Inputs loadInputs(const fs::path &models, const std::vector<shapes::Shape> &shap
         inputs.push_back({pipeline::volumeModel(shape.name, std::move(volume), shapePalette()), "shape", &shape});
     }
 
+    if (!only.empty())
+        inputs.erase(std::remove_if(inputs.begin(), inputs.end(), [&](const Input &in) { return in.model->name != only; }),
+                     inputs.end());
     return result;
 }
 

@@ -16,9 +16,10 @@ namespace voxelfair::report {
 struct Arguments {
     std::filesystem::path folder;  // where report.md and the pictures go
     int size = 560;                // picture size in pixels
+    std::string only;              // --only NAME: that model's pictures and rows alone (e.g. to refresh one strip)
 };
 
-// Parses `comparison_report [output folder] [--size N]`; false (after printing the usage) on a bad
+// Parses `comparison_report [output folder] [--size N] [--only MODEL]`; false (after printing the usage) on a bad
 // argument.
 bool parseArguments(int argc, char **argv, const std::filesystem::path &defaultFolder, Arguments &out);
 
@@ -35,6 +36,8 @@ struct Inputs {
 
 // Loads every input; models that fail to load or are too small are listed in `skipped`.
 // `shapes` must outlive the inputs (they point into it).
-Inputs loadInputs(const std::filesystem::path &models, const std::vector<shapes::Shape> &shapes);
+// With `only` non-empty, just the input of that name.
+Inputs loadInputs(const std::filesystem::path &models, const std::vector<shapes::Shape> &shapes,
+                  const std::string &only);
 
 }  // namespace voxelfair::report

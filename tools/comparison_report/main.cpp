@@ -2,7 +2,7 @@
 // Taubin, HC Laplacian, TwoStep) and VTK's windowed sinc on the shared real models and on voxelized
 // analytic shapes, in numbers and pictures.
 //
-//   comparison_report [output folder] [--size N]     (default folder: <build>/report, N = 560)
+//   comparison_report [output folder] [--size N] [--only MODEL]   (default folder: <build>/report, N = 560)
 //
 // Writes <folder>/report.md (also printed) and, per model, PNG pictures seen from the same
 // camera: raw voxels, Taubin (10 steps), ours (one pass of the paper's fairing), the constrained
@@ -42,7 +42,7 @@ int main(int argc, char **argv) {
     }
 
     const std::vector<shapes::Shape> shapeList = comparison::comparisonShapes();
-    const Inputs inputs = loadInputs(VOXELFAIR_MODELS_DIR, shapeList);
+    const Inputs inputs = loadInputs(VOXELFAIR_MODELS_DIR, shapeList, args.only);
     std::vector<ModelRun> runs;
     std::vector<Pictures> pictures;
     for (const Input &in : inputs.inputs) {

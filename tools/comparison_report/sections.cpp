@@ -129,7 +129,7 @@ void writeCounts(std::ostream &out, const std::vector<ModelRun> &runs) {
                                o.hasAtlas ? std::to_string(o.atlasVertices) : "-",
                                o.hasAtlas ? std::to_string(o.atlas.layout.wedgeUv.size() / 3) : "-",
                                o.hasAtlas ? std::to_string(o.atlas.charts.chartCount()) : "-",
-                               o.hasAtlas ? format("%d^2", o.atlas.texture.size) : o.atlas.message()});
+                               o.hasAtlas ? format("%dx%d", o.atlas.texture.width, o.atlas.texture.height) : o.atlas.message()});
     }
     out << counts.markdown() << "\n";
 }
