@@ -73,7 +73,7 @@ Pictures renderPictures(const ModelRun &run, const fs::path &folder, int size) {
         add(renderMesh(textured, view, options), "textured", "ours + atlas texture, smooth normals");
         out.texture = stem + "_texture.png";
         const AtlasTexture &t = run.ours.atlas.texture;
-        writePng((folder / out.texture).string(), t.rgba.data(), t.size, t.size, 4);
+        writePng((folder / out.texture).string(), t.rgba.data(), t.width, t.height, 4);
     }
     // The paper's Figure 9: the faired quads in wireframe, where the edges are not too dense to see.
     if (run.ours.mesh.quadCount() <= kMaxWireframeQuads) {
