@@ -58,14 +58,16 @@ inline TriangleMesh smoothLikeVtk(const VoxelVolume &input, const Settings &sett
     image->SetSpacing(1.0, 1.0, 1.0);
     vtkNew<vtkUnsignedCharArray> labels;
     const size_t nx = size_t(volume.sizeX) + 2, ny = size_t(volume.sizeY) + 2, nz = size_t(volume.sizeZ) + 2;
-    labels->SetNumberOfTuples(vtkIdType(nx * ny * nz));
+    const size_t pointCount = nx * ny * nz;
+    labels->SetNumberOfTuples(vtkIdType(pointCount));
     for (size_t z = 0; z < nz; ++z)
         for (size_t y = 0; y < ny; ++y)
             for (size_t x = 0; x < nx; ++x) {
                 const bool inside = x >= 1 && y >= 1 && z >= 1 && x <= size_t(volume.sizeX) &&
                                     y <= size_t(volume.sizeY) && z <= size_t(volume.sizeZ) &&
                                     volume.solid(int(x - 1), int(y - 1), int(z - 1));
-                labels->SetValue(vtkIdType((z * ny + y) * nx + x), inside ? 1 : 0);
+                const size_t point = (z * ny + y) * nx + x;
+                labels->SetValue(vtkIdType(point), inside ? 1 : 0);
             }
     image->GetPointData()->SetScalars(labels);
 
