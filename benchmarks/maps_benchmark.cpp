@@ -4,7 +4,7 @@
 // (vcglib, tests/maps/vcg_quadric_tex.h), then the timed stage: the normal map of the faired mesh
 // baked into the decimated mesh's atlas (tangents included). Target: at most 150 ms.
 // MikkTSpace tangents of the decimated and of the full mesh are timed on their own too.
-#include "maps/faired_models.h"
+#include "pipeline/faired_models.h"
 #include "maps/mikktspace.h"
 #include "maps/normal_bake.h"
 #include "shapes/analytic_shapes.h"

@@ -4,7 +4,7 @@
 // faired surface's normal as the decimated mesh's own vertex normals are (shading_error.h).
 // Prints the per-model figures the README's table quotes. Needs ../shared/models (skips
 // without) and vcglib.
-#include "faired_models.h"
+#include "pipeline/faired_models.h"
 #include "shading_error.h"
 
 #include <gtest/gtest.h>

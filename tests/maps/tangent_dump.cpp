@@ -4,7 +4,7 @@
 // float32 positions (3 per corner), normals (3), UVs (2), our tangents (4).
 //
 //   maps_tangent_dump OUTDIR MODEL...
-#include "faired_models.h"
+#include "pipeline/faired_models.h"
 #include "maps/mikktspace.h"
 
 #include <cstdio>

@@ -7,7 +7,7 @@
 
 #include "pipeline/pipeline_stages.h"
 #include "maps/normal_bake.h"
-#include "vcg_quadric_tex.h"
+#include "smoothers/vcg_quadric_tex.h"
 
 #include <filesystem>
 #include <memory>
