@@ -59,10 +59,12 @@ void BM_Atlas(benchmark::State &state, int steps, PackMode mode, float texelsPer
 }
 BENCHMARK_CAPTURE(BM_Atlas, Taubin10_Tight_2TexelsPerVoxel_Crisp, 10, PackMode::Tight, 2.0f, 0, true)
     ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Atlas, Taubin10_Tight_2TexelsPerVoxel, 10, PackMode::Tight, 2.0f, 0)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Atlas, Taubin10_Tight_2TexelsPerVoxel, 10, PackMode::Tight, 2.0f, 0)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Atlas, Taubin4_Tight_2TexelsPerVoxel, 4, PackMode::Tight, 2.0f, 0)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Atlas, Raw_Tight_2TexelsPerVoxel, 0, PackMode::Tight, 2.0f, 0)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Atlas, Taubin10_Paper_2TexelsPerVoxel, 10, PackMode::Paper, 2.0f, 0)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Atlas, Taubin10_Paper_2TexelsPerVoxel, 10, PackMode::Paper, 2.0f, 0)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Atlas, Taubin10_Tight_Fill1024, 10, PackMode::Tight, 0.0f, 1024)->Unit(benchmark::kMillisecond);
 
 // The stages one by one on the Taubin10 sphere at 2 texels per voxel.

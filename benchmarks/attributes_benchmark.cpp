@@ -25,9 +25,10 @@ struct FairedSphere {
 
     FairedSphere() {
         const double r = 72.3;
-        BoundarySurface s = extractBoundarySurface(shapes::voxelize(
-            shapes::sphere(glm::dvec3(r + 2.31, r + 2.17, r + 2.43), r),
-            [](int x, int y, int z) { return Voxel{uint8_t((x ^ y ^ z) & 0xff), 0}; }));
+        BoundarySurface s = extractBoundarySurface(
+            shapes::voxelize(shapes::sphere(glm::dvec3(r + 2.31, r + 2.17, r + 2.43), r), [](int x, int y, int z) {
+                return Voxel{uint8_t((x ^ y ^ z) & 0xff), 0};
+            }));
         positions = std::move(s.positions);
         quads = std::move(s.quads);
         offsets.resize(quadCount() + 1);
@@ -35,7 +36,8 @@ struct FairedSphere {
             offsets[q] = uint32_t(4 * q);
         fairModifiedLanczos({positions.data(), positions.size(), offsets.data(), quads.data(), quadCount()}, nullptr);
         quadNormals.resize(quadCount());
-        computePolygonNormals({positions.data(), positions.size(), offsets.data(), quads.data(), quadCount()}, quadNormals.data());
+        computePolygonNormals({positions.data(), positions.size(), offsets.data(), quads.data(), quadCount()},
+                              quadNormals.data());
         for (const Voxel &v : s.quadVoxels)
             quadColours.emplace_back(v.colour / 255.0f, 0.5f, 1.0f - v.colour / 255.0f, 1.0f);
     }
@@ -54,9 +56,11 @@ void setCounters(benchmark::State &state) {
 
 void BM_TriangulateQuads(benchmark::State &state) {
     const FairedSphere &m = mesh();
-    std::vector<uint32_t> triangles(3 * countFanTriangles({nullptr, 0, m.offsets.data(), nullptr, m.quadCount()})), toQuad(triangles.size() / 3);
+    std::vector<uint32_t> triangles(3 * countFanTriangles({nullptr, 0, m.offsets.data(), nullptr, m.quadCount()})),
+        toQuad(triangles.size() / 3);
     for (auto _ : state) {
-        triangulatePolygons({nullptr, m.positions.size(), m.offsets.data(), m.quads.data(), m.quadCount()}, triangles.data(), toQuad.data());
+        triangulatePolygons({nullptr, m.positions.size(), m.offsets.data(), m.quads.data(), m.quadCount()},
+                            triangles.data(), toQuad.data());
         benchmark::DoNotOptimize(triangles.data());
     }
     setCounters(state);
@@ -67,7 +71,8 @@ void BM_QuadNormals(benchmark::State &state) {
     const FairedSphere &m = mesh();
     std::vector<glm::vec3> normals(m.quadCount());
     for (auto _ : state) {
-        computePolygonNormals({m.positions.data(), m.positions.size(), m.offsets.data(), m.quads.data(), m.quadCount()}, normals.data());
+        computePolygonNormals({m.positions.data(), m.positions.size(), m.offsets.data(), m.quads.data(), m.quadCount()},
+                              normals.data());
         benchmark::DoNotOptimize(normals.data());
     }
     setCounters(state);
@@ -78,7 +83,8 @@ void BM_VertexNormals(benchmark::State &state) {
     const FairedSphere &m = mesh();
     std::vector<glm::vec3> normals(m.positions.size());
     for (auto _ : state) {
-        computeVertexNormals({nullptr, m.positions.size(), m.offsets.data(), m.quads.data(), m.quadCount()}, m.quadNormals.data(), normals.data());
+        computeVertexNormals({nullptr, m.positions.size(), m.offsets.data(), m.quads.data(), m.quadCount()},
+                             m.quadNormals.data(), normals.data());
         benchmark::DoNotOptimize(normals.data());
     }
     setCounters(state);
@@ -89,7 +95,9 @@ void BM_VertexColours(benchmark::State &state) {
     const FairedSphere &m = mesh();
     std::vector<glm::vec4> colours(m.positions.size());
     for (auto _ : state) {
-        computeVertexColours({nullptr, m.positions.size(), m.offsets.data(), m.quads.data(), m.quadCount(), m.quadColours.data()}, colours.data());
+        computeVertexColours(
+            {nullptr, m.positions.size(), m.offsets.data(), m.quads.data(), m.quadCount(), m.quadColours.data()},
+            colours.data());
         benchmark::DoNotOptimize(colours.data());
     }
     setCounters(state);

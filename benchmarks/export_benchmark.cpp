@@ -32,9 +32,11 @@ const Input &input() {
         for (size_t t = 0; t < sphere.triangles.size(); t += 3) {
             const glm::vec3 &a = sphere.positions[sphere.triangles[t]], &b = sphere.positions[sphere.triangles[t + 1]],
                             &c = sphere.positions[sphere.triangles[t + 2]];
-            for (int k = 0; k < 3; ++k) normals[sphere.triangles[t + size_t(k)]] += glm::cross(b - a, c - a);
+            for (int k = 0; k < 3; ++k)
+                normals[sphere.triangles[t + size_t(k)]] += glm::cross(b - a, c - a);
         }
-        for (glm::vec3 &n : normals) n = glm::normalize(n);
+        for (glm::vec3 &n : normals)
+            n = glm::normalize(n);
         in.mesh.normals = normals;
         in.texture.png.assign(1 << 20, 0x55);  // embedded as is: its content does not matter here
         return in;
@@ -45,7 +47,8 @@ const Input &input() {
 void report(benchmark::State &state, const GlbMesh &mesh, size_t bytes) {
     state.counters["triangles"] = double(mesh.triangles.size() / 3);
     state.counters["bytes"] = double(bytes);
-    state.counters["MB/s"] = benchmark::Counter(double(bytes) * double(state.iterations()) / 1e6, benchmark::Counter::kIsRate);
+    state.counters["MB/s"] =
+        benchmark::Counter(double(bytes) * double(state.iterations()) / 1e6, benchmark::Counter::kIsRate);
 }
 
 void BM_GlbWriterOneNode(benchmark::State &state) {
@@ -69,10 +72,12 @@ void BM_GlbWriterTwelveAnimatedParts(benchmark::State &state) {
         node.name = "part" + std::to_string(i);
         node.parent = i == 0 ? -1 : 0;
         node.world = glm::translate(glm::mat4(1.0f), glm::vec3(float(i), 0.0f, 0.0f));
-        for (int f = 0; f < 8; ++f) node.frames.push_back(glm::rotate(node.world, 0.1f * float(f), glm::vec3(0, 0, 1)));
+        for (int f = 0; f < 8; ++f)
+            node.frames.push_back(glm::rotate(node.world, 0.1f * float(f), glm::vec3(0, 0, 1)));
         scene.nodes.push_back(node);
     }
-    for (size_t t = 0; t < mesh.triangles.size() / 3; ++t) mesh.triangleNodes.push_back(int(t % 12));
+    for (size_t t = 0; t < mesh.triangles.size() / 3; ++t)
+        mesh.triangleNodes.push_back(int(t % 12));
     size_t bytes = 0;
     for (auto _ : state) {
         const std::vector<uint8_t> glb = writeGlb(mesh, scene, &in.texture);

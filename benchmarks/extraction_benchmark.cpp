@@ -20,7 +20,8 @@ namespace {
 // Extracts every volume once per iteration; counters describe one iteration.
 void extract(benchmark::State &state, const std::vector<VoxelVolume> &volumes) {
     size_t voxels = 0, quads = 0, vertices = 0;
-    for (const VoxelVolume &v : volumes) voxels += v.voxelCount();
+    for (const VoxelVolume &v : volumes)
+        voxels += v.voxelCount();
     for (auto _ : state) {
         quads = vertices = 0;
         for (const VoxelVolume &v : volumes) {
@@ -39,7 +40,8 @@ DenseGrid shell(int side, int wall) {
     DenseGrid g = box(side, side, side);
     for (int z = wall; z < side - wall; ++z)
         for (int y = wall; y < side - wall; ++y)
-            for (int x = wall; x < side - wall; ++x) g.set(x, y, z, false);
+            for (int x = wall; x < side - wall; ++x)
+                g.set(x, y, z, false);
     return g;
 }
 
@@ -57,11 +59,13 @@ DenseGrid blob(size_t targetVoxels) {
             for (int y = c[1] - r; y <= c[1] + r; ++y)
                 for (int x = c[0] - r; x <= c[0] + r; ++x) {
                     const int dx = x - c[0], dy = y - c[1], dz = z - c[2];
-                    if (dx * dx + dy * dy + dz * dz > r * r || !g.inside(x, y, z) || g.at(x, y, z)) continue;
+                    if (dx * dx + dy * dy + dz * dz > r * r || !g.inside(x, y, z) || g.at(x, y, z))
+                        continue;
                     g.set(x, y, z);
                     ++count;
                 }
-        for (int &ci : c) ci = std::clamp(ci + step(rng), 10, side - 11);
+        for (int &ci : c)
+            ci = std::clamp(ci + step(rng), 10, side - 11);
     }
     return g;
 }
@@ -80,7 +84,8 @@ void BM_VxlModel(benchmark::State &state, const std::string &file) {
     std::vector<VoxelVolume> volumes;
     try {
         const std::vector<uint8_t> bytes = readFileBytes(path);
-        for (VxlSection &section : readVxl(bytes.data(), bytes.size()).sections) volumes.push_back(std::move(section.volume));
+        for (VxlSection &section : readVxl(bytes.data(), bytes.size()).sections)
+            volumes.push_back(std::move(section.volume));
     } catch (const std::exception &e) {
         state.SkipWithError(e.what());
         return;

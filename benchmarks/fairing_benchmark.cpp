@@ -30,14 +30,16 @@ struct SphereMesh {
 
     SphereMesh() {
         const double r = 72.3;
-        BoundarySurface s = extractBoundarySurface(shapes::voxelize(shapes::sphere(glm::dvec3(r + 2.31, r + 2.17, r + 2.43), r)));
+        BoundarySurface s =
+            extractBoundarySurface(shapes::voxelize(shapes::sphere(glm::dvec3(r + 2.31, r + 2.17, r + 2.43), r)));
         positions = std::move(s.positions);
         quads = std::move(s.quads);
         offsets.resize(quadCount() + 1);
         for (size_t q = 0; q < offsets.size(); ++q)
             offsets[q] = uint32_t(4 * q);
         triangles.resize(3 * countFanTriangles({nullptr, 0, offsets.data(), nullptr, quadCount()}));
-        triangulatePolygons({nullptr, positions.size(), offsets.data(), quads.data(), quadCount()}, triangles.data(), nullptr);
+        triangulatePolygons({nullptr, positions.size(), offsets.data(), quads.data(), quadCount()}, triangles.data(),
+                            nullptr);
         buildVertexNeighbours({nullptr, positions.size(), offsets.data(), quads.data(), quadCount()}, neighbours);
     }
     size_t quadCount() const { return quads.size() / 4; }
@@ -140,11 +142,13 @@ void BM_SpeedRatios(benchmark::State &state) {
     for (auto _ : state) {
         positions = m.positions;
         double t = cpuMilliseconds();
-        fairModifiedLanczos({positions.data(), positions.size(), m.offsets.data(), m.quads.data(), m.quadCount()}, nullptr);
+        fairModifiedLanczos({positions.data(), positions.size(), m.offsets.data(), m.quads.data(), m.quadCount()},
+                            nullptr);
         paper += cpuMilliseconds() - t;
         positions = m.positions;
         t = cpuMilliseconds();
-        fairConstrained({positions.data(), positions.size(), m.offsets.data(), m.quads.data(), m.quadCount()}, nullptr, options);
+        fairConstrained({positions.data(), positions.size(), m.offsets.data(), m.quads.data(), m.quadCount()}, nullptr,
+                        options);
         constrained += cpuMilliseconds() - t;
         t = cpuMilliseconds();
         vcgtaubin::taubinLikeMeshLab(vm, 10, 0.5f, -0.53f);

@@ -27,8 +27,12 @@ const Prepared &prepared() {
         const shapes::Shape sphere = shapes::sphere(glm::dvec3(r + 2.31, r + 2.17, r + 2.43), r);
         Palette palette;
         palette.colours[1] = {214, 128, 64};
-        const auto model = pipeline::volumeModel(
-            "sphere_r70", shapes::voxelize(sphere, [](int, int, int) { return Voxel{1, 0}; }), palette);
+        const auto model = pipeline::volumeModel("sphere_r70",
+                                                 shapes::voxelize(sphere,
+                                                                  [](int, int, int) {
+                                                                      return Voxel{1, 0};
+                                                                  }),
+                                                 palette);
         Prepared out;
         out.hi = fairedMesh(*model, 8.0f);
         out.lo = vcgdecimate::decimate(out.hi.positions, out.hi.triangles, out.hi.wedgeUv, 0.1);
@@ -59,7 +63,8 @@ void BM_MikkTSpace(benchmark::State &state, bool decimated) {
     const Prepared &p = prepared();
     const NormalBakeMesh mesh = decimated ? bakeView(p.lo.positions, p.lo.normals, p.lo.triangles, p.lo.wedgeUv)
                                           : bakeView(p.hi.positions, p.hi.normals, p.hi.triangles, p.hi.wedgeUv);
-    for (auto _ : state) benchmark::DoNotOptimize(targetTangents(mesh).data());
+    for (auto _ : state)
+        benchmark::DoNotOptimize(targetTangents(mesh).data());
     state.counters["faces"] = double(mesh.faceCount);
 }
 BENCHMARK_CAPTURE(BM_MikkTSpace, Decimated, true)->Unit(benchmark::kMillisecond);

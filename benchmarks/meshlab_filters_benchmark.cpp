@@ -29,7 +29,8 @@ VoxelVolume voxelSphere(int radius) {
         for (int x = 0; x < side; ++x)
             for (int z = 0; z < side; ++z) {
                 const float dx = x + 0.5f - c, dy = y + 0.5f - c, dz = z + 0.5f - c;
-                if (dx * dx + dy * dy + dz * dz <= float(radius * radius)) builder.add(x, y, z, Voxel{1, 0});
+                if (dx * dx + dy * dy + dz * dz <= float(radius * radius))
+                    builder.add(x, y, z, Voxel{1, 0});
             }
     return builder.finish();
 }
@@ -65,7 +66,8 @@ Fixture &fixture() {
 
 QAction *findFilter(FilterVoxelfairPlugin &plugin, const QString &name) {
     for (QAction *a : plugin.actions())
-        if (a->text() == name) return a;
+        if (a->text() == name)
+            return a;
     return nullptr;
 }
 
@@ -73,12 +75,15 @@ void BM_LanczosFairingUnit(benchmark::State &state) {
     Fixture &f = fixture();
     std::vector<glm::vec3> positions;
     std::vector<uint32_t> offsets(f.surface.quadCount() + 1);
-    for (size_t q = 0; q <= f.surface.quadCount(); ++q) offsets[q] = uint32_t(4 * q);
+    for (size_t q = 0; q <= f.surface.quadCount(); ++q)
+        offsets[q] = uint32_t(4 * q);
     for (auto _ : state) {
         state.PauseTiming();
         positions = f.surface.positions;
         state.ResumeTiming();
-        fairModifiedLanczos({positions.data(), positions.size(), offsets.data(), f.surface.quads.data(), f.surface.quadCount()}, nullptr, LanczosFairingOptions{});
+        fairModifiedLanczos(
+            {positions.data(), positions.size(), offsets.data(), f.surface.quads.data(), f.surface.quadCount()},
+            nullptr, LanczosFairingOptions{});
         benchmark::DoNotOptimize(positions.data());
     }
     state.counters["vertices"] = double(f.surface.positions.size());
@@ -94,7 +99,8 @@ void BM_LanczosFairingFilterInMeshLab(benchmark::State &state) {
         state.PauseTiming();
         MeshModel *copy = f.freshCopy();
         state.ResumeTiming();
-        if (!plugin.applyFilter(action, f.document, parameters, nullptr)) state.SkipWithError("filter failed");
+        if (!plugin.applyFilter(action, f.document, parameters, nullptr))
+            state.SkipWithError("filter failed");
         state.PauseTiming();
         f.document.delMesh(copy);
         state.ResumeTiming();

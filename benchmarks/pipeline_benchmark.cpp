@@ -45,9 +45,11 @@ std::unique_ptr<pipeline::Model> loadModel(const std::string &name) {
         Palette palette;
         palette.colours[1] = {214, 128, 64};
         palette.colours[2] = {72, 132, 190};
-        return pipeline::volumeModel(name, shapes::voxelize(sphere, [](int x, int y, int z) {
-                                         return Voxel{uint8_t(1 + (x / 4 + y / 4 + z / 4) % 2), 0};
-                                     }),
+        return pipeline::volumeModel(name,
+                                     shapes::voxelize(sphere,
+                                                      [](int x, int y, int z) {
+                                                          return Voxel{uint8_t(1 + (x / 4 + y / 4 + z / 4) % 2), 0};
+                                                      }),
                                      palette);
     }
     return pipeline::loadVxl(kModels + "/vxl/" + name + ".vxl", kModels + "/pal");
@@ -145,7 +147,9 @@ void fairing(benchmark::State &state, const Prepared &p) {
         state.PauseTiming();
         positions = p.raw.positions;
         state.ResumeTiming();
-        fairModifiedLanczos({positions.data(), positions.size(), p.raw.offsets.data(), p.raw.quads.data(), p.raw.quadCount()}, nullptr, options);
+        fairModifiedLanczos(
+            {positions.data(), positions.size(), p.raw.offsets.data(), p.raw.quads.data(), p.raw.quadCount()}, nullptr,
+            options);
         benchmark::DoNotOptimize(positions.data());
     }
 }
@@ -231,9 +235,8 @@ struct NamedStage {
 
 const std::vector<NamedStage> &stages() {
     static const std::vector<NamedStage> list = {
-        {"extraction", extraction}, {"fairing", fairing},          {"attributes", attributes},
-        {"atlas", atlas},           {"atlas_charts", atlasCharts}, {"atlas_pack", atlasPack},
-        {"atlas_bake", atlasBake},
+        {"extraction", extraction},    {"fairing", fairing},      {"attributes", attributes}, {"atlas", atlas},
+        {"atlas_charts", atlasCharts}, {"atlas_pack", atlasPack}, {"atlas_bake", atlasBake},
 #ifdef VOXELFAIR_HAVE_VCGLIB
         {"taubin10", taubin10},
 #endif
@@ -243,32 +246,33 @@ const std::vector<NamedStage> &stages() {
 
 void registerStages(const std::string &group, const std::string &model) {
     for (const NamedStage &s : stages())
-        benchmark::RegisterBenchmark((group + "/" + s.name + "/" + model).c_str(),
-                                     [model, stage = s.stage](benchmark::State &state) { runStage(state, model, stage); })
-            ->Unit(benchmark::kMillisecond);
+        benchmark::RegisterBenchmark((group + "/" + s.name + "/" + model).c_str(), [model, stage = s.stage](
+                                                                                       benchmark::State &state) {
+            runStage(state, model, stage);
+        })->Unit(benchmark::kMillisecond);
 }
 
 }  // namespace
 
 int main(int argc, char **argv) {
     // Table 1 / Table 2: the shared models with more than a few hundred voxels, then the synthetic tank.
-    const std::vector<std::string> table1 = {"truckc", "jeep", "3tnktur", "3tnk", "yaggun", "hind",
+    const std::vector<std::string> table1 = {"truckc", "jeep", "3tnktur", "3tnk",   "yaggun", "hind",
                                              "hmec",   "cc",   "legs",    "subapc", "tank63k"};
     for (const std::string &model : table1)
         registerStages("Table1", model);
     for (int radius : {8, 16, 32, 64, 120})
         registerStages("Scaling", "sphere_r" + std::to_string(radius));
     for (const std::string model : {"truckc", "cc", "legs", "subapc", "tank63k"})
-        benchmark::RegisterBenchmark(("Chain/" + model).c_str(),
-                                     [model](benchmark::State &state) { runStage(state, model, chain); })
-            ->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark("Chain8TexelsPerVoxel/tank63k",
-                                 [](benchmark::State &state) { runStage(state, "tank63k", chainAt8); })
-        ->Unit(benchmark::kMillisecond);
+        benchmark::RegisterBenchmark(("Chain/" + model).c_str(), [model](benchmark::State &state) {
+            runStage(state, model, chain);
+        })->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("Chain8TexelsPerVoxel/tank63k", [](benchmark::State &state) {
+        runStage(state, "tank63k", chainAt8);
+    })->Unit(benchmark::kMillisecond);
     for (const std::string model : {"subapc", "legs"})
-        benchmark::RegisterBenchmark(("Parse/" + model).c_str(),
-                                     [model](benchmark::State &state) { parseVxl(state, model); })
-            ->Unit(benchmark::kMillisecond);
+        benchmark::RegisterBenchmark(("Parse/" + model).c_str(), [model](benchmark::State &state) {
+            parseVxl(state, model);
+        })->Unit(benchmark::kMillisecond);
 
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv))

@@ -24,27 +24,25 @@ enum Model { kMenger, kMengerShuffled, kDenseRandom, kTestTransform };
 Bytes makeModel(Model which) {
     std::mt19937 random(7);
     switch (which) {
-        case kMenger:
-            return VoxWriter().model(81, 81, 81, mengerSponge(4)).bytes();
-        case kMengerShuffled: {
-            std::vector<VoxVoxel> voxels = mengerSponge(4);
-            std::shuffle(voxels.begin(), voxels.end(), random);
-            return VoxWriter().model(81, 81, 81, voxels).bytes();
-        }
-        case kDenseRandom: {
-            std::vector<VoxVoxel> voxels;
-            for (int z = 0; z < 16; ++z)
-                for (int y = 0; y < 100; ++y)
-                    for (int x = 0; x < 100; ++x)
-                        voxels.push_back({uint8_t(x), uint8_t(y), uint8_t(z), uint8_t(1 + random() % 255)});
-            std::shuffle(voxels.begin(), voxels.end(), random);
-            return VoxWriter().model(100, 100, 16, voxels).bytes();
-        }
-        case kTestTransform: {
-            const std::filesystem::path path =
-                std::filesystem::path(VOXELFAIR_MODELS_DIR) / "vox" / "test-transform.vox";
-            return std::filesystem::exists(path) ? readFileBytes(path.string()) : Bytes{};
-        }
+    case kMenger: return VoxWriter().model(81, 81, 81, mengerSponge(4)).bytes();
+    case kMengerShuffled: {
+        std::vector<VoxVoxel> voxels = mengerSponge(4);
+        std::shuffle(voxels.begin(), voxels.end(), random);
+        return VoxWriter().model(81, 81, 81, voxels).bytes();
+    }
+    case kDenseRandom: {
+        std::vector<VoxVoxel> voxels;
+        for (int z = 0; z < 16; ++z)
+            for (int y = 0; y < 100; ++y)
+                for (int x = 0; x < 100; ++x)
+                    voxels.push_back({uint8_t(x), uint8_t(y), uint8_t(z), uint8_t(1 + random() % 255)});
+        std::shuffle(voxels.begin(), voxels.end(), random);
+        return VoxWriter().model(100, 100, 16, voxels).bytes();
+    }
+    case kTestTransform: {
+        const std::filesystem::path path = std::filesystem::path(VOXELFAIR_MODELS_DIR) / "vox" / "test-transform.vox";
+        return std::filesystem::exists(path) ? readFileBytes(path.string()) : Bytes{};
+    }
     }
     return {};
 }
@@ -62,14 +60,16 @@ void BM_VoxImport(benchmark::State &state) {
     const Model which = Model(state.range(0));
     const Bytes &bytes = model(which);
     state.SetLabel(kNames[which]);
-    if (bytes.empty()) return state.SkipWithError("shared models folder missing");
+    if (bytes.empty())
+        return state.SkipWithError("shared models folder missing");
     size_t voxels = 0;
     for (auto _ : state) {
         const VoxFile file = readVox(bytes.data(), bytes.size());
         const VoxelScene scene = voxScene(file);
         benchmark::DoNotOptimize(scene.parts.data());
         voxels = 0;
-        for (const VoxelVolume &m : file.models) voxels += m.voxelCount();
+        for (const VoxelVolume &m : file.models)
+            voxels += m.voxelCount();
     }
     state.counters["voxels"] = double(voxels);
     state.counters["bytes"] = double(bytes.size());
@@ -81,7 +81,8 @@ void BM_VoxExtractScene(benchmark::State &state) {
     const Model which = Model(state.range(0));
     const Bytes &bytes = model(which);
     state.SetLabel(kNames[which]);
-    if (bytes.empty()) return state.SkipWithError("shared models folder missing");
+    if (bytes.empty())
+        return state.SkipWithError("shared models folder missing");
     const VoxFile file = readVox(bytes.data(), bytes.size());
     const VoxelScene scene = voxScene(file);
     size_t quads = 0;

@@ -18,9 +18,9 @@ namespace {
 
 // Palette entries the tank uses (the file embeds this palette).
 enum Colour : uint8_t {
-    kHouse = 20,       // inside the house-colour range 16..31: recoloured by the importer's choice
-    kOlive = 40,       // 40..43: olive drab, light to dark
-    kTrack = 56,       // 56..58: track greys
+    kHouse = 20,  // inside the house-colour range 16..31: recoloured by the importer's choice
+    kOlive = 40,  // 40..43: olive drab, light to dark
+    kTrack = 56,  // 56..58: track greys
     kBlack = 64,
     kHeadlight = 65,
 };
@@ -29,9 +29,11 @@ Palette tankPalette() {
     Palette p;
     remapHouseColours(p, Rgb{255, 0, 0});
     const Rgb olive[4] = {{128, 138, 72}, {108, 118, 60}, {90, 98, 50}, {70, 76, 40}};
-    for (int i = 0; i < 4; ++i) p.colours[kOlive + i] = olive[i];
+    for (int i = 0; i < 4; ++i)
+        p.colours[kOlive + i] = olive[i];
     const Rgb greys[3] = {{92, 92, 88}, {66, 66, 62}, {44, 44, 42}};
-    for (int i = 0; i < 3; ++i) p.colours[kTrack + i] = greys[i];
+    for (int i = 0; i < 3; ++i)
+        p.colours[kTrack + i] = greys[i];
     p.colours[kBlack] = {16, 16, 16};
     p.colours[kHeadlight] = {250, 236, 150};
     return p;
@@ -45,7 +47,8 @@ VxlSection makeSection(const char *name, int sx, int sy, int sz, glm::vec3 minBo
         for (int x = 0; x < sx; ++x)
             for (int z = 0; z < sz; ++z) {
                 const int colour = rule(x, y, z);
-                if (colour >= 0) builder.add(x, y, z, Voxel{uint8_t(colour), 0});
+                if (colour >= 0)
+                    builder.add(x, y, z, Voxel{uint8_t(colour), 0});
             }
     VxlSection s;
     s.name = name;
@@ -62,15 +65,20 @@ int hull(int x, int y, int z) {
     if (track) {
         // Rounded track ends: cut the lower and upper corners at both ends.
         const int fromEnd = std::min(x, 27 - x);
-        if (z > 4) return -1;
-        if ((z == 0 || z == 4) && fromEnd < 2) return -1;
+        if (z > 4)
+            return -1;
+        if ((z == 0 || z == 4) && fromEnd < 2)
+            return -1;
         return kTrack + ((x + z) % 3 == 0 ? 2 : (y == 0 || y == 15 ? 1 : 0));
     }
     // Upper hull between the tracks, with the front sloping down.
     const int top = x > 21 ? 7 - (x - 21) / 2 : 7;
-    if (z < 1 || z > top) return -1;
-    if (x == 27 && z == top && (y == 5 || y == 10)) return kHeadlight;
-    if (z == top && (y == 7 || y == 8)) return kHouse;  // a house-colour stripe along the deck
+    if (z < 1 || z > top)
+        return -1;
+    if (x == 27 && z == top && (y == 5 || y == 10))
+        return kHeadlight;
+    if (z == top && (y == 7 || y == 8))
+        return kHouse;  // a house-colour stripe along the deck
     return kOlive + (z >= top ? 0 : z >= top - 2 ? 1 : 2);
 }
 
@@ -78,8 +86,10 @@ int hull(int x, int y, int z) {
 int turret(int x, int y, int z) {
     const float cx = x + 0.5f - 6.0f, cy = y + 0.5f - 5.0f;
     const float r = std::sqrt(cx * cx * 0.55f + cy * cy);
-    if (r > 5.2f - (z >= 4 ? (z - 3) * 0.9f : 0.0f)) return -1;
-    if (z == 5 && std::abs(cx) < 1.0f && std::abs(cy) < 1.0f) return kHouse;  // hatch
+    if (r > 5.2f - (z >= 4 ? (z - 3) * 0.9f : 0.0f))
+        return -1;
+    if (z == 5 && std::abs(cx) < 1.0f && std::abs(cy) < 1.0f)
+        return kHouse;  // hatch
     return kOlive + (z >= 4 ? 0 : 1);
 }
 
@@ -88,15 +98,18 @@ int cannon(int x, int y, int z) {
     const float cy = y + 0.5f - 3.5f, cz = z + 0.5f - 3.5f;
     const float r = std::sqrt(cy * cy + cz * cz);
     const bool muzzle = x >= 15;
-    if (r > (muzzle ? 3.4f : 2.4f)) return -1;
-    if (x == 17 && r < 1.3f) return kBlack;  // the bore
+    if (r > (muzzle ? 3.4f : 2.4f))
+        return -1;
+    if (x == 17 && r < 1.3f)
+        return kBlack;  // the bore
     return muzzle ? kTrack + 1 : kOlive + 2;
 }
 
 void writeFile(const std::string &path, const std::vector<uint8_t> &bytes) {
     std::ofstream out(path, std::ios::binary);
     out.write(reinterpret_cast<const char *>(bytes.data()), std::streamsize(bytes.size()));
-    if (!out) throw std::runtime_error("cannot write " + path);
+    if (!out)
+        throw std::runtime_error("cannot write " + path);
 }
 
 }  // namespace

@@ -30,7 +30,8 @@ void readAtlasInput(const MeshModel &m, AtlasInput &in) {
     std::vector<uint32_t> arrayIndex(cm.vert.size(), 0);
     const bool vertexColours = m.hasDataMask(MeshModel::MM_VERTCOLOR);
     for (size_t v = 0; v < cm.vert.size(); ++v) {
-        if (cm.vert[v].IsD()) continue;
+        if (cm.vert[v].IsD())
+            continue;
         arrayIndex[v] = uint32_t(in.positions.size());
         const auto &p = cm.vert[v].cP();
         in.positions.emplace_back(p[0], p[1], p[2]);
@@ -42,10 +43,13 @@ void readAtlasInput(const MeshModel &m, AtlasInput &in) {
     const bool faceColours = m.hasDataMask(MeshModel::MM_FACECOLOR);
     for (size_t f = 0; f < cm.face.size(); ++f) {
         const CFaceO &face = cm.face[f];
-        if (face.IsD()) continue;
-        for (int k = 0; k < 3; ++k) in.triangles.push_back(arrayIndex[vcg::tri::Index(cm, face.cV(k))]);
+        if (face.IsD())
+            continue;
+        for (int k = 0; k < 3; ++k)
+            in.triangles.push_back(arrayIndex[vcg::tri::Index(cm, face.cV(k))]);
         in.faceOf.push_back(uint32_t(f));
-        if (faceColours) in.faceColours.emplace_back(face.cC()[0], face.cC()[1], face.cC()[2]);
+        if (faceColours)
+            in.faceColours.emplace_back(face.cC()[0], face.cC()[1], face.cC()[2]);
     }
     in.mesh.positions = in.positions.data();
     in.mesh.vertexCount = in.positions.size();
@@ -58,7 +62,8 @@ void readAtlasInput(const MeshModel &m, AtlasInput &in) {
 // Where the PNG goes: an absolute name as given; a relative one beside the mesh's file (or in
 // the current folder for a mesh that has none).
 QString texturePath(const MeshModel &m, const QString &name) {
-    if (QFileInfo(name).isAbsolute()) return QDir::cleanPath(name);
+    if (QFileInfo(name).isAbsolute())
+        return QDir::cleanPath(name);
     const QString meshFile = m.fullName();
     const QDir folder = meshFile.isEmpty() ? QDir::current() : QFileInfo(meshFile).absoluteDir();
     return QDir::cleanPath(folder.absoluteFilePath(name));
@@ -74,14 +79,16 @@ QString defaultTextureName(const MeshModel &m) {
 bool FilterVoxelfairPlugin::applyTextureAtlas(MeshModel &m, const RichParameterList &parameters, vcg::CallBackPos *cb) {
     QElapsedTimer timer;
     timer.start();
-    if (m.cm.fn == 0) return fail("Texture Atlas: the mesh has no faces");
+    if (m.cm.fn == 0)
+        return fail("Texture Atlas: the mesh has no faces");
 
     AtlasInput input;
     readAtlasInput(m, input);
 
     AtlasOptions options;
     const float angle = parameters.getFloat("chartAngle");
-    if (!(angle > 0.0f && angle < 90.0f)) return fail("Texture Atlas: the chart angle must be between 0 and 90 degrees");
+    if (!(angle > 0.0f && angle < 90.0f))
+        return fail("Texture Atlas: the chart angle must be between 0 and 90 degrees");
     options.charts.minSeedCosine = std::cos(angle * float(M_PI) / 180.0f);
     options.pack.mode = parameters.getEnum("packing") == 1 ? PackMode::Paper : PackMode::Tight;
     float voxelSize = parameters.getFloat("voxelSize");
@@ -96,19 +103,26 @@ bool FilterVoxelfairPlugin::applyTextureAtlas(MeshModel &m, const RichParameterL
         std::vector<float> partVoxel(parts.size());
         for (size_t k = 0; k < parts.size(); ++k) {
             const PartArrays &part = parts[k];
-            if (largest == nullptr || part.polygonCount() > largest->polygonCount()) largest = &part;
-            partVoxel[k] = detectVoxelSize({part.positions.data(), part.positions.size(), part.polygonOffsets.data(), part.polygonIndices.data(), part.polygonCount()});
+            if (largest == nullptr || part.polygonCount() > largest->polygonCount())
+                largest = &part;
+            partVoxel[k] = detectVoxelSize({part.positions.data(), part.positions.size(), part.polygonOffsets.data(),
+                                            part.polygonIndices.data(), part.polygonCount()});
         }
-        voxelSize = largest ? partVoxel[size_t(largest - parts.data())]
-                            : detectVoxelSize({arrays.positions.data(), arrays.positions.size(), arrays.polygonOffsets.data(), arrays.polygonIndices.data(), arrays.polygonCount()});
-        if (!(voxelSize > 0.0f) || !std::isfinite(voxelSize)) voxelSize = 1.0f;
+        voxelSize =
+            largest ? partVoxel[size_t(largest - parts.data())]
+                    : detectVoxelSize({arrays.positions.data(), arrays.positions.size(), arrays.polygonOffsets.data(),
+                                       arrays.polygonIndices.data(), arrays.polygonCount()});
+        if (!(voxelSize > 0.0f) || !std::isfinite(voxelSize))
+            voxelSize = 1.0f;
         // Part number -> texel scale (part numbers are small, as splitByPart assumes).
         std::vector<float> scaleOfPart;
         for (size_t k = 0; k < parts.size(); ++k) {
             const size_t number = size_t(parts[k].part);
-            if (number >= scaleOfPart.size()) scaleOfPart.resize(number + 1, 1.0f);
+            if (number >= scaleOfPart.size())
+                scaleOfPart.resize(number + 1, 1.0f);
             const float scale = voxelSize / partVoxel[k];
-            if (partVoxel[k] > 0.0f && std::isfinite(scale) && scale > 0.0f) scaleOfPart[number] = scale;
+            if (partVoxel[k] > 0.0f && std::isfinite(scale) && scale > 0.0f)
+                scaleOfPart[number] = scale;
         }
         const std::vector<int> facePart = parts.empty() ? std::vector<int>() : facePartNumbers(m.cm);
         bool scaled = false;
@@ -116,33 +130,40 @@ bool FilterVoxelfairPlugin::applyTextureAtlas(MeshModel &m, const RichParameterL
             faceScale.assign(input.faceOf.size(), 1.0f);
             for (size_t i = 0; i < input.faceOf.size(); ++i) {
                 const int part = facePart[input.faceOf[i]];
-                if (part >= 0 && size_t(part) < scaleOfPart.size()) faceScale[i] = scaleOfPart[size_t(part)];
+                if (part >= 0 && size_t(part) < scaleOfPart.size())
+                    faceScale[i] = scaleOfPart[size_t(part)];
                 scaled = scaled || faceScale[i] != 1.0f;
             }
         }
-        if (scaled) input.mesh.faceTexelScale = faceScale.data();
+        if (scaled)
+            input.mesh.faceTexelScale = faceScale.data();
     }
     const float texelsPerVoxel = parameters.getFloat("texelsPerVoxel");
-    if (!(texelsPerVoxel > 0.0f)) return fail("Texture Atlas: texels per voxel must be positive");
+    if (!(texelsPerVoxel > 0.0f))
+        return fail("Texture Atlas: texels per voxel must be positive");
     options.pack.texelsPerUnit = texelsPerVoxel / voxelSize;
     options.pack.maxTextureSize = parameters.getInt("maxTextureSize");
     const int textureSize = parameters.getInt("textureSize");
-    if (textureSize < 0 || textureSize > 16384) return fail("Texture Atlas: the texture size must be 0 (from the density) to 16384");
+    if (textureSize < 0 || textureSize > 16384)
+        return fail("Texture Atlas: the texture size must be 0 (from the density) to 16384");
     options.pack.textureSize = textureSize;
     options.pack.fillTexture = parameters.getBool("fillTexture");
     options.pack.allowWide = parameters.getBool("wideTextures");
     options.pack.gutter = parameters.getInt("gutter");
     options.bake.source = parameters.getEnum("colours") == 1 ? BakeSource::VertexColours : BakeSource::FaceColours;
 
-    if (cb) cb(10, "Building the texture atlas");
+    if (cb)
+        cb(10, "Building the texture atlas");
     const TextureAtlas atlas = buildTextureAtlas(input.mesh, options);
     if (atlas.status() != AtlasStatus::Ok)
         return fail(QString("Texture Atlas: %1").arg(QString::fromStdString(atlas.message())));
 
     // Write the texture before touching the mesh, so a failure leaves the mesh as it was.
-    if (cb) cb(80, "Writing the texture");
+    if (cb)
+        cb(80, "Writing the texture");
     const QString path = texturePath(m, parameters.getString("textureFile").trimmed());
-    if (QFileInfo(path).fileName().isEmpty()) return fail("Texture Atlas: the texture file name is empty");
+    if (QFileInfo(path).fileName().isEmpty())
+        return fail("Texture Atlas: the texture file name is empty");
     const QImage image(atlas.texture.rgba.data(), atlas.texture.width, atlas.texture.height, atlas.texture.width * 4,
                        QImage::Format_RGBA8888);
     if (!QDir().mkpath(QFileInfo(path).absolutePath()) || !image.save(path, "PNG"))
@@ -171,13 +192,15 @@ bool FilterVoxelfairPlugin::applyTextureAtlas(MeshModel &m, const RichParameterL
                .arg(atlas.layout.densityReduced ? " (reduced to fit the maximum size)" : "")
                .arg(toString(atlas.layout.mode))
                .arg(toString(atlas.texture.source))
-               .arg(atlas.texture.note.empty() ? QString() : QString(" (%1)").arg(QString::fromStdString(atlas.texture.note)))
+               .arg(atlas.texture.note.empty() ? QString()
+                                               : QString(" (%1)").arg(QString::fromStdString(atlas.texture.note)))
                .arg(path)
                .arg(timer.elapsed()));
     if (atlas.charts.separatedFaces > 0)
-        report(QString("Texture Atlas: %1 faces too thin for the texel grid got charts of their own, so every face keeps "
-                       "its voxel colour")
-                   .arg(atlas.charts.separatedFaces));
+        report(
+            QString("Texture Atlas: %1 faces too thin for the texel grid got charts of their own, so every face keeps "
+                    "its voxel colour")
+                .arg(atlas.charts.separatedFaces));
     if (atlas.crispDensity > double(options.pack.texelsPerUnit) * 1.001)
         report(QString("Texture Atlas: %1 texels per voxel would leave too many faces too thin for their voxel colour: "
                        "raised to at least %2")
@@ -193,9 +216,10 @@ bool FilterVoxelfairPlugin::applyTextureAtlas(MeshModel &m, const RichParameterL
                    .arg(atlas.layout.width)
                    .arg(atlas.layout.height));
     if (atlas.charts.nonManifoldEdges > 0 || atlas.charts.degenerateFaces > 0)
-        report(QString("Texture Atlas: %1 non-manifold edges used as chart borders, %2 degenerate faces given their own "
-                       "texel")
-                   .arg(atlas.charts.nonManifoldEdges)
-                   .arg(atlas.charts.degenerateFaces));
+        report(
+            QString("Texture Atlas: %1 non-manifold edges used as chart borders, %2 degenerate faces given their own "
+                    "texel")
+                .arg(atlas.charts.nonManifoldEdges)
+                .arg(atlas.charts.degenerateFaces));
     return true;
 }

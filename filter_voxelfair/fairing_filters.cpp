@@ -48,7 +48,10 @@ void fairArrays(bool constrained, const RichParameterList &parameters, std::vect
         if (r.status == FairingStatus::Ok) {
             summary.add(r.movedVertices, r.skippedVertices, r.maxDisplacement, r.voxelSize);
             summary.extra = QString("%1 sharp edges kept, %2 vertices pinned, %3 held by their voxel cell")
-                                .arg(r.sharpEdges).arg(r.pinnedVertices).arg(r.clampedVertices).toStdString();
+                                .arg(r.sharpEdges)
+                                .arg(r.pinnedVertices)
+                                .arg(r.clampedVertices)
+                                .toStdString();
         }
         return;
     }
@@ -57,27 +60,32 @@ void fairArrays(bool constrained, const RichParameterList &parameters, std::vect
     options.passes = parameters.getInt("passes");
     options.voxelSize = voxelSize;
     const FairingReport r = fairModifiedLanczos(mesh, selected, options);
-    if (r.status == FairingStatus::Ok) summary.add(r.movedVertices, r.skippedVertices, r.maxDisplacement, r.voxelSize);
+    if (r.status == FairingStatus::Ok)
+        summary.add(r.movedVertices, r.skippedVertices, r.maxDisplacement, r.voxelSize);
 }
 
 }  // namespace
 
-bool FilterVoxelfairPlugin::applyLanczosFairing(MeshModel &m, const RichParameterList &parameters, vcg::CallBackPos *cb) {
+bool FilterVoxelfairPlugin::applyLanczosFairing(MeshModel &m, const RichParameterList &parameters,
+                                                vcg::CallBackPos *cb) {
     QElapsedTimer timer;
     timer.start();
-    if (m.cm.fn == 0) return fail("Voxel Fairing: the mesh has no faces to smooth");
+    if (m.cm.fn == 0)
+        return fail("Voxel Fairing: the mesh has no faces to smooth");
     const bool constrained = parameters.getEnum("mode") == 1;
     const bool selectedOnly = parameters.getBool("Selected");
 
-    if (cb) cb(10, "Reading polygons");
+    if (cb)
+        cb(10, "Reading polygons");
     // Kept between runs (see polygonArrays); each run overwrites it.
     thread_local PolygonArrays arrays;
     polygonArrays(m.cm, arrays);
-    if (cb) cb(40, "Fairing");
+    if (cb)
+        cb(40, "Fairing");
     FairingSummary summary;
     // Parts of an import may have different voxel sizes: detect and fair each on its own.
-    std::vector<PartArrays> parts = parameters.getFloat("voxelSize") > 0 ? std::vector<PartArrays>{}
-                                                                         : splitByPart(arrays, m.cm);
+    std::vector<PartArrays> parts =
+        parameters.getFloat("voxelSize") > 0 ? std::vector<PartArrays>{} : splitByPart(arrays, m.cm);
     if (parts.empty()) {
         try {
             fairArrays(constrained, parameters, arrays.positions, arrays.polygonOffsets, arrays.polygonIndices,
@@ -93,7 +101,8 @@ bool FilterVoxelfairPlugin::applyLanczosFairing(MeshModel &m, const RichParamete
             } catch (const Error &e) {
                 return fail(QString("Voxel Fairing: part %1: %2").arg(part.part).arg(e.what()));
             }
-            for (size_t v = 0; v < part.positions.size(); ++v) arrays.positions[part.globalVertex[v]] = part.positions[v];
+            for (size_t v = 0; v < part.positions.size(); ++v)
+                arrays.positions[part.globalVertex[v]] = part.positions[v];
         }
     }
     if (summary.parts == 0) {
@@ -110,8 +119,9 @@ bool FilterVoxelfairPlugin::applyLanczosFairing(MeshModel &m, const RichParamete
                               ? QString::number(double(summary.minVoxel))
                               : QString("%1 to %2").arg(double(summary.minVoxel)).arg(double(summary.maxVoxel));
     const QString how = constrained ? QString("constrained mode")
-                                    : QString("%1 pass(es), lambda %2").arg(parameters.getInt("passes")).arg(
-                                          double(parameters.getFloat("lambda")));
+                                    : QString("%1 pass(es), lambda %2")
+                                          .arg(parameters.getInt("passes"))
+                                          .arg(double(parameters.getFloat("lambda")));
     report(QString("Voxel Fairing: %1, voxel size %2%3%4: %5 vertices moved (at most %6)%7 in %8 ms")
                .arg(how)
                .arg(voxel)
@@ -127,9 +137,11 @@ bool FilterVoxelfairPlugin::applyLanczosFairing(MeshModel &m, const RichParamete
 }
 
 bool FilterVoxelfairPlugin::applyAttributeSmoothing(MeshModel &m, const RichParameterList &parameters,
-                                                   vcg::CallBackPos *cb) {
-    if (m.cm.fn == 0) return fail("Attribute Smoothing: the mesh has no faces");
-    if (cb) cb(10, "Reading polygons");
+                                                    vcg::CallBackPos *cb) {
+    if (m.cm.fn == 0)
+        return fail("Attribute Smoothing: the mesh has no faces");
+    if (cb)
+        cb(10, "Reading polygons");
     const PolygonArrays arrays = polygonArrays(m.cm);
     const size_t polygons = arrays.polygonCount();
     PolygonMesh mesh = polygonMesh(arrays.positions, arrays.polygonOffsets, arrays.polygonIndices);
@@ -138,7 +150,8 @@ bool FilterVoxelfairPlugin::applyAttributeSmoothing(MeshModel &m, const RichPara
     std::vector<glm::vec3> vertexNormals(arrays.positions.size());
     computePolygonNormals(mesh, polygonNormals.data());
     VertexNormalOptions normalOptions;
-    if (!parameters.getBool("distinctNormals")) normalOptions.sameDirection = 2.0f;  // never merge: plain mean
+    if (!parameters.getBool("distinctNormals"))
+        normalOptions.sameDirection = 2.0f;  // never merge: plain mean
     computeVertexNormals(mesh, polygonNormals.data(), vertexNormals.data(), normalOptions);
 
     // Face colours: the polygon's first triangle's colour; without face colours, the vertex colours
@@ -156,8 +169,7 @@ bool FilterVoxelfairPlugin::applyAttributeSmoothing(MeshModel &m, const RichPara
         m.updateDataMask(MeshModel::MM_VERTCOLOR);
         for (size_t i = 0; i < arrays.vertexOf.size(); ++i) {
             const glm::vec4 c = glm::clamp(glm::round(vertexColours[i]), 0.0f, 255.0f);
-            m.cm.vert[arrays.vertexOf[i]].C() =
-                vcg::Color4b(uint8_t(c.r), uint8_t(c.g), uint8_t(c.b), uint8_t(c.a));
+            m.cm.vert[arrays.vertexOf[i]].C() = vcg::Color4b(uint8_t(c.r), uint8_t(c.g), uint8_t(c.b), uint8_t(c.a));
         }
     } else {
         report("Attribute Smoothing: the mesh has no face colours; vertex colours are left as they are");
@@ -165,7 +177,8 @@ bool FilterVoxelfairPlugin::applyAttributeSmoothing(MeshModel &m, const RichPara
 
     if (parameters.getBool("triangulate")) {
         for (CFaceO &f : m.cm.face)
-            if (!f.IsD()) f.ClearF(0), f.ClearF(1), f.ClearF(2);
+            if (!f.IsD())
+                f.ClearF(0), f.ClearF(1), f.ClearF(2);
         m.clearDataMask(MeshModel::MM_POLYGONAL);
     }
     vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(m.cm);

@@ -6,7 +6,8 @@
 
 FilterVoxelfairPlugin::FilterVoxelfairPlugin() {
     typeList << FP_LANCZOS_FAIRING << FP_ATTRIBUTE_SMOOTHING << FP_TEXTURE_ATLAS << FP_NORMAL_MAP;
-    for (FilterIDType id : types()) actionList << new QAction(filterName(id), this);
+    for (FilterIDType id : types())
+        actionList << new QAction(filterName(id), this);
 }
 
 QString FilterVoxelfairPlugin::filterName(FilterIDType filter) const {
@@ -39,7 +40,8 @@ QString FilterVoxelfairPlugin::filterInfo(FilterIDType filter) const {
         return "Section 4.5 of the SBGames 2010 paper: splits the mesh into charts grown greedily from the most "
                "axis-aligned faces (a face joins while its normal stays within the chart angle of the seed face's), "
                "projects each chart orthographically at one texel density, packs them into one square texture and "
-               "bakes a diffuse texture, saved as a PNG and referenced by the mesh (per-wedge UVs), ready for MeshLab's "
+               "bakes a diffuse texture, saved as a PNG and referenced by the mesh (per-wedge UVs), ready for "
+               "MeshLab's "
                "<i>Quadric Edge Collapse Decimation (with texture)</i> and the PLY/OBJ exporters.<br>"
                "<b>Crisp</b> colours give every texel the colour of the voxel face it lies in, so pixel art keeps "
                "every voxel; <b>smoothed</b> bakes the vertex colours of the attribute smoothing, as the paper does. "
@@ -96,15 +98,20 @@ void FilterVoxelfairPlugin::initParameterSet(QAction *action, MeshModel &m, Rich
     switch (ID(action)) {
     case FP_LANCZOS_FAIRING:
         parameters.addParam(RichEnum(
-            "mode", 0, QStringList() << "Paper" << "Constrained", "Mode",
+            "mode", 0,
+            QStringList() << "Paper"
+                          << "Constrained",
+            "Mode",
             "Paper: the SBGames 2010 operator exactly (lambda and passes below). Constrained (beyond the paper): "
             "staircase-aware normal filtering and vertex fitting, every vertex kept inside its voxel cell: about "
             "2.5 times more accurate on curved shapes, flat faces and straight edges kept sharp, thin parts and "
             "volume kept; slower (two passes of its own; lambda and passes are not used)."));
-        parameters.addParam(RichFloat("lambda", 4.0f / 3.0f, "Lambda",
-                                      "Scales the estimated frequency (eq. 8). 4/3 is the authors' value; the paper's "
-                                      "text says 1.3. Higher smooths more; above 1.5 the staircase starts to overshoot."));
-        parameters.addParam(RichInt("passes", 1, "Passes", "The paper needs one pass; each further pass smooths more."));
+        parameters.addParam(
+            RichFloat("lambda", 4.0f / 3.0f, "Lambda",
+                      "Scales the estimated frequency (eq. 8). 4/3 is the authors' value; the paper's "
+                      "text says 1.3. Higher smooths more; above 1.5 the staircase starts to overshoot."));
+        parameters.addParam(
+            RichInt("passes", 1, "Passes", "The paper needs one pass; each further pass smooths more."));
         parameters.addParam(RichFloat("voxelSize", 0.0f, "Voxel size",
                                       "Length of a voxel in mesh units: the unit of the displacement. 0 detects it as "
                                       "the mesh's dominant edge length, so a scaled model smooths the same; on an "
@@ -124,7 +131,10 @@ void FilterVoxelfairPlugin::initParameterSet(QAction *action, MeshModel &m, Rich
         parameters.addParam(RichFloat("chartAngle", 45.573f, "Chart angle (degrees)",
                                       "A face joins a chart while its normal is within this angle of the chart's seed "
                                       "face normal. 45.57 (cos 0.7) is the authors' value; the paper's text says 60."));
-        parameters.addParam(RichEnum("packing", 0, QStringList() << "Tight" << "Paper", "Packing",
+        parameters.addParam(RichEnum("packing", 0,
+                                     QStringList() << "Tight"
+                                                   << "Paper",
+                                     "Packing",
                                      "Tight: bottom-left fill of the charts' rasterised shapes with quarter turns "
                                      "(dense). Paper: the authors' guillotine merge of bounding boxes."));
         parameters.addParam(RichFloat("texelsPerVoxel", 8.0f, "Texels per voxel",
@@ -134,12 +144,14 @@ void FilterVoxelfairPlugin::initParameterSet(QAction *action, MeshModel &m, Rich
         parameters.addParam(RichInt("textureSize", 0, "Texture size (0: from the density)",
                                     "0: the size follows Texels per voxel (above). Otherwise this square size, at the "
                                     "highest texels per voxel that fits it."));
-        parameters.addParam(RichBool("fillTexture", true, "Fill the texture",
-                                     "With a size from the density: raise the density until the charts fill the "
-                                     "texture chosen, instead of leaving what rounding up to a power of two left empty."));
-        parameters.addParam(RichBool("wideTextures", true, "Allow 2:1 textures",
-                                     "With a size from the density: a texture twice as wide as tall when the charts fit "
-                                     "one, half the memory of the square."));
+        parameters.addParam(
+            RichBool("fillTexture", true, "Fill the texture",
+                     "With a size from the density: raise the density until the charts fill the "
+                     "texture chosen, instead of leaving what rounding up to a power of two left empty."));
+        parameters.addParam(
+            RichBool("wideTextures", true, "Allow 2:1 textures",
+                     "With a size from the density: a texture twice as wide as tall when the charts fit "
+                     "one, half the memory of the square."));
         parameters.addParam(RichInt("maxTextureSize", 4096, "Maximum texture size",
                                     "The largest texture side; if the charts do not fit, the resolution is lowered."));
         parameters.addParam(RichFloat("voxelSize", 0.0f, "Voxel size",
@@ -147,7 +159,9 @@ void FilterVoxelfairPlugin::initParameterSet(QAction *action, MeshModel &m, Rich
         parameters.addParam(RichInt("gutter", 4, "Gutter (texels)",
                                     "Empty texels between charts; half of it is filled with the chart's colours so "
                                     "bilinear filtering and the first mip level do not bleed."));
-        parameters.addParam(RichEnum("colours", 0, QStringList() << "Crisp voxel colours" << "Smoothed vertex colours",
+        parameters.addParam(RichEnum("colours", 0,
+                                     QStringList() << "Crisp voxel colours"
+                                                   << "Smoothed vertex colours",
                                      "Texture colours",
                                      "Crisp: each texel takes its face's colour (from face colours). Smoothed: the "
                                      "vertex colours interpolated, as the paper does."));
@@ -159,7 +173,8 @@ void FilterVoxelfairPlugin::initParameterSet(QAction *action, MeshModel &m, Rich
 
 void FilterVoxelfairPlugin::initParameterSet(QAction *action, MeshDocument &md, RichParameterList &parameters) {
     if (ID(action) != FP_NORMAL_MAP) {
-        if (md.mm() != nullptr) initParameterSet(action, *md.mm(), parameters);
+        if (md.mm() != nullptr)
+            initParameterSet(action, *md.mm(), parameters);
         return;
     }
     // The default source: the first other layer (the faired layer the current one was duplicated from).
@@ -172,10 +187,12 @@ void FilterVoxelfairPlugin::initParameterSet(QAction *action, MeshDocument &md, 
     parameters.addParam(RichMesh("sourceMesh", source ? source : md.mm(), &md, "Source layer",
                                  "The undecimated faired mesh whose shading is baked (the layer the current one was "
                                  "duplicated from before decimating)."));
-    parameters.addParam(RichString("normalFile", md.mm() ? defaultNormalMapName(*md.mm()) : QString("voxelfair_normal.png"),
-                                   "Normal map file", "The PNG to write: a relative name is put beside the mesh's file."));
-    parameters.addParam(RichInt("textureSize", 0, "Texture size",
-                                "Side of the normal map in texels; 0 takes the base colour texture's (the atlas' layout)."));
+    parameters.addParam(
+        RichString("normalFile", md.mm() ? defaultNormalMapName(*md.mm()) : QString("voxelfair_normal.png"),
+                   "Normal map file", "The PNG to write: a relative name is put beside the mesh's file."));
+    parameters.addParam(
+        RichInt("textureSize", 0, "Texture size",
+                "Side of the normal map in texels; 0 takes the base colour texture's (the atlas' layout)."));
     parameters.addParam(RichInt("dilation", 2, "Gutter rings",
                                 "Rings of texels filled around the charts, as the base colour's (half its gutter)."));
 }
@@ -197,7 +214,8 @@ bool FilterVoxelfairPlugin::applyFilter(QAction *action, MeshDocument &md, const
     // Nothing may escape into MeshLab: every failure becomes this filter's error.
     try {
         MeshModel *m = md.mm();
-        if (m == nullptr) return fail("there is no current mesh");
+        if (m == nullptr)
+            return fail("there is no current mesh");
         switch (ID(action)) {
         case FP_LANCZOS_FAIRING: return applyLanczosFairing(*m, parameters, cb);
         case FP_ATTRIBUTE_SMOOTHING: return applyAttributeSmoothing(*m, parameters, cb);

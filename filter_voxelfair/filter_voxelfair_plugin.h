@@ -18,7 +18,7 @@ class FilterVoxelfairPlugin : public QObject, public MeshFilterInterface {
 
 public:
     enum FilterId {
-        FP_LANCZOS_FAIRING,    // section 4.3
+        FP_LANCZOS_FAIRING,      // section 4.3
         FP_ATTRIBUTE_SMOOTHING,  // section 4.4
         FP_TEXTURE_ATLAS,        // section 4.5
         FP_NORMAL_MAP            // beyond the paper (its future work): tangent-space normal map

@@ -11,14 +11,16 @@ namespace {
 constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
 
 uint32_t findRoot(std::vector<uint32_t> &parent, uint32_t f) {
-    while (parent[f] != f) f = parent[f] = parent[parent[f]];
+    while (parent[f] != f)
+        f = parent[f] = parent[parent[f]];
     return f;
 }
 
 // The one faux edge of a face, or -1 when it has none or several.
 int singleFauxEdge(const CFaceO &f) {
     const int count = int(f.IsF(0)) + int(f.IsF(1)) + int(f.IsF(2));
-    if (count != 1) return -1;
+    if (count != 1)
+        return -1;
     return f.IsF(0) ? 0 : f.IsF(1) ? 1 : 2;
 }
 
@@ -33,7 +35,8 @@ public:
         const size_t faces = mesh_.face.size();
         for (size_t f = 0; f < faces; ++f) {
             const CFaceO &face = mesh_.face[f];
-            if (face.IsD()) continue;
+            if (face.IsD())
+                continue;
             const int e = singleFauxEdge(face);
             if (!face.IsF(0) && !face.IsF(1) && !face.IsF(2)) {
                 emitTriangle(f);
@@ -59,7 +62,8 @@ private:
 
     void push(uint32_t meshVertex) {
         const uint32_t v = arrayIndex_[meshVertex];
-        if (v != kNone) out_.polygonIndices.push_back(v);
+        if (v != kNone)
+            out_.polygonIndices.push_back(v);
     }
 
     void close(size_t face) {
@@ -68,7 +72,8 @@ private:
     }
 
     void emitTriangle(size_t f) {
-        for (int k = 0; k < 3; ++k) push(vertex(mesh_.face[f], k));
+        for (int k = 0; k < 3; ++k)
+            push(vertex(mesh_.face[f], k));
         close(f);
     }
 
@@ -87,9 +92,11 @@ private:
     // Any other grouping: triangles joined by faux edges, found by sorting the edges' vertex
     // pairs; each polygon lists its distinct vertices in order of appearance.
     void gatherGeneral(const std::vector<uint32_t> &faces) {
-        if (faces.empty()) return;
+        if (faces.empty())
+            return;
         std::vector<uint32_t> parent(faces.size());
-        for (size_t i = 0; i < faces.size(); ++i) parent[i] = uint32_t(i);
+        for (size_t i = 0; i < faces.size(); ++i)
+            parent[i] = uint32_t(i);
         struct FauxEdge {
             uint64_t key;
             uint32_t item;
@@ -98,7 +105,8 @@ private:
         for (size_t i = 0; i < faces.size(); ++i) {
             const CFaceO &face = mesh_.face[faces[i]];
             for (int e = 0; e < 3; ++e) {
-                if (!face.IsF(e)) continue;
+                if (!face.IsF(e))
+                    continue;
                 const uint64_t a = vertex(face, e), b = vertex(face, (e + 1) % 3);
                 edges.push_back({std::min(a, b) << 32 | std::max(a, b), uint32_t(i)});
             }
@@ -110,21 +118,25 @@ private:
 
         // Members of each group, in face order (counting sort by root).
         std::vector<uint32_t> start(faces.size() + 1, 0);
-        for (size_t i = 0; i < faces.size(); ++i) ++start[findRoot(parent, uint32_t(i)) + 1];
-        for (size_t i = 0; i < faces.size(); ++i) start[i + 1] += start[i];
+        for (size_t i = 0; i < faces.size(); ++i)
+            ++start[findRoot(parent, uint32_t(i)) + 1];
+        for (size_t i = 0; i < faces.size(); ++i)
+            start[i + 1] += start[i];
         std::vector<uint32_t> members(faces.size());
         std::vector<uint32_t> fill(start.begin(), start.end() - 1);
-        for (size_t i = 0; i < faces.size(); ++i) members[fill[parent[i]]++] = uint32_t(i);
+        for (size_t i = 0; i < faces.size(); ++i)
+            members[fill[parent[i]]++] = uint32_t(i);
 
         for (size_t r = 0; r < faces.size(); ++r) {
-            if (start[r] == start[r + 1]) continue;
+            if (start[r] == start[r + 1])
+                continue;
             const size_t first = out_.polygonIndices.size();
             for (uint32_t m = start[r]; m < start[r + 1]; ++m) {
                 const CFaceO &face = mesh_.face[faces[members[m]]];
                 for (int k = 0; k < 3; ++k) {
                     const uint32_t v = arrayIndex_[vertex(face, k)];
-                    if (v != kNone && std::find(out_.polygonIndices.begin() + long(first), out_.polygonIndices.end(), v) ==
-                                          out_.polygonIndices.end())
+                    if (v != kNone && std::find(out_.polygonIndices.begin() + long(first), out_.polygonIndices.end(),
+                                                v) == out_.polygonIndices.end())
                         out_.polygonIndices.push_back(v);
                 }
             }
@@ -164,9 +176,11 @@ void polygonArrays(const CMeshO &mesh, PolygonArrays &out) {
     arrayIndex.assign(mesh.vert.size(), kNone);
     for (size_t v = 0; v < mesh.vert.size(); ++v) {
         const CVertexO &vert = mesh.vert[v];
-        if (vert.IsD()) continue;
+        if (vert.IsD())
+            continue;
         const glm::vec3 p(vert.cP()[0], vert.cP()[1], vert.cP()[2]);
-        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) ++out.nonFiniteVertices;
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+            ++out.nonFiniteVertices;
         arrayIndex[v] = uint32_t(out.positions.size());
         out.positions.push_back(p);
         out.vertexOf.push_back(uint32_t(v));
@@ -184,7 +198,8 @@ void writePositions(const PolygonArrays &arrays, const std::vector<glm::vec3> &p
 
 // The per-face part attribute io_vxl writes ("voxelfair_part"); false when the mesh has none.
 static bool findPartAttribute(const CMeshO &mesh, CMeshO::PerFaceAttributeHandle<int> &partOf) {
-    if (!vcg::tri::HasPerFaceAttribute(mesh, "voxelfair_part")) return false;
+    if (!vcg::tri::HasPerFaceAttribute(mesh, "voxelfair_part"))
+        return false;
     // vcglib's attribute lookup takes a mutable mesh; nothing is written through it.
     CMeshO &lookup = const_cast<CMeshO &>(mesh);
     partOf = vcg::tri::Allocator<CMeshO>::FindPerFaceAttribute<int>(lookup, "voxelfair_part");
@@ -193,21 +208,25 @@ static bool findPartAttribute(const CMeshO &mesh, CMeshO::PerFaceAttributeHandle
 
 std::vector<int> facePartNumbers(const CMeshO &mesh) {
     CMeshO::PerFaceAttributeHandle<int> partOf;
-    if (!findPartAttribute(mesh, partOf)) return {};
+    if (!findPartAttribute(mesh, partOf))
+        return {};
     std::vector<int> parts(mesh.face.size());
-    for (size_t f = 0; f < mesh.face.size(); ++f) parts[f] = partOf[f];
+    for (size_t f = 0; f < mesh.face.size(); ++f)
+        parts[f] = partOf[f];
     return parts;
 }
 
 std::vector<PartArrays> splitByPart(const PolygonArrays &arrays, const CMeshO &mesh) {
     CMeshO::PerFaceAttributeHandle<int> partOf;
-    if (!findPartAttribute(mesh, partOf)) return {};
+    if (!findPartAttribute(mesh, partOf))
+        return {};
 
     // Most meshes are one part: find out before copying anything.
     bool severalParts = false;
     for (size_t p = 1; p < arrays.polygonCount() && !severalParts; ++p)
         severalParts = partOf[arrays.polygonFace[p]] != partOf[arrays.polygonFace[0]];
-    if (!severalParts) return {};
+    if (!severalParts)
+        return {};
 
     std::vector<PartArrays> parts;
     std::vector<int> slotOfPart;  // part number -> index into parts (parts are small numbers)
@@ -215,8 +234,10 @@ std::vector<PartArrays> splitByPart(const PolygonArrays &arrays, const CMeshO &m
     std::vector<uint32_t> vertexPart(arrays.positions.size(), kNone);
     for (size_t p = 0; p < arrays.polygonCount(); ++p) {
         const int part = partOf[arrays.polygonFace[p]];
-        if (part < 0) return {};
-        if (size_t(part) >= slotOfPart.size()) slotOfPart.resize(size_t(part) + 1, -1);
+        if (part < 0)
+            return {};
+        if (size_t(part) >= slotOfPart.size())
+            slotOfPart.resize(size_t(part) + 1, -1);
         if (slotOfPart[size_t(part)] < 0) {
             slotOfPart[size_t(part)] = int(parts.size());
             parts.push_back(PartArrays{part, {}, {}, {0}, {}, {}});
@@ -237,7 +258,8 @@ std::vector<PartArrays> splitByPart(const PolygonArrays &arrays, const CMeshO &m
         }
         out.polygonOffsets.push_back(uint32_t(out.polygonIndices.size()));
     }
-    if (parts.size() < 2) return {};
+    if (parts.size() < 2)
+        return {};
     return parts;
 }
 

@@ -39,7 +39,8 @@ struct BakeArrays {
 void readBakeArrays(const CMeshO &cm, BakeArrays &out) {
     std::vector<uint32_t> index(cm.vert.size(), 0);
     for (size_t v = 0; v < cm.vert.size(); ++v) {
-        if (cm.vert[v].IsD()) continue;
+        if (cm.vert[v].IsD())
+            continue;
         index[v] = uint32_t(out.positions.size());
         const auto &p = cm.vert[v].cP();
         const auto &n = cm.vert[v].cN();
@@ -47,7 +48,8 @@ void readBakeArrays(const CMeshO &cm, BakeArrays &out) {
         out.normals.emplace_back(n[0], n[1], n[2]);
     }
     for (const CFaceO &face : cm.face) {
-        if (face.IsD()) continue;
+        if (face.IsD())
+            continue;
         for (int k = 0; k < 3; ++k) {
             out.triangles.push_back(index[vcg::tri::Index(cm, face.cV(k))]);
             out.wedgeUv.emplace_back(face.cWT(k).U(), face.cWT(k).V());
@@ -59,7 +61,8 @@ void readBakeArrays(const CMeshO &cm, BakeArrays &out) {
 QString normalNameFor(const MeshModel &m) {
     if (!m.cm.textures.empty()) {
         QString base = QFileInfo(QString::fromStdString(m.cm.textures.front())).completeBaseName();
-        if (base.endsWith("_texture")) base.chop(8);
+        if (base.endsWith("_texture"))
+            base.chop(8);
         return base + "_normal.png";
     }
     const QString base = QFileInfo(m.fullName()).completeBaseName();
@@ -67,7 +70,8 @@ QString normalNameFor(const MeshModel &m) {
 }
 
 QString besideMesh(const MeshModel &m, const QString &name) {
-    if (QFileInfo(name).isAbsolute()) return QDir::cleanPath(name);
+    if (QFileInfo(name).isAbsolute())
+        return QDir::cleanPath(name);
     const QString meshFile = m.fullName();
     const QDir folder = meshFile.isEmpty() ? QDir::current() : QFileInfo(meshFile).absoluteDir();
     return QDir::cleanPath(folder.absoluteFilePath(name));
@@ -79,13 +83,16 @@ QString besideMesh(const MeshModel &m, const QString &name) {
 // from the face quality, where io_vxl writes each face's part too.
 bool restoreParts(MeshModel &target, MeshModel &source) {
     const ExportScene *scene = findExportScene(source.cm);
-    if (scene == nullptr || findExportScene(target.cm) != nullptr) return false;
-    if (!target.hasDataMask(MeshModel::MM_FACEQUALITY)) return false;
+    if (scene == nullptr || findExportScene(target.cm) != nullptr)
+        return false;
+    if (!target.hasDataMask(MeshModel::MM_FACEQUALITY))
+        return false;
     storeExportScene(*scene, target.cm);
     if (!vcg::tri::HasPerFaceAttribute(target.cm, kPartAttributeName)) {
         auto part = vcg::tri::Allocator<CMeshO>::GetPerFaceAttribute<int>(target.cm, kPartAttributeName);
         for (CFaceO &f : target.cm.face)
-            if (!f.IsD()) part[f] = int(std::lround(f.Q()));
+            if (!f.IsD())
+                part[f] = int(std::lround(f.Q()));
     }
     return true;
 }
@@ -94,36 +101,42 @@ bool restoreParts(MeshModel &target, MeshModel &source) {
 
 QString defaultNormalMapName(const MeshModel &m) { return normalNameFor(m); }
 
-bool FilterVoxelfairPlugin::applyNormalMap(MeshDocument &md, const RichParameterList &parameters, vcg::CallBackPos *cb) {
+bool FilterVoxelfairPlugin::applyNormalMap(MeshDocument &md, const RichParameterList &parameters,
+                                           vcg::CallBackPos *cb) {
     QElapsedTimer timer;
     timer.start();
     MeshModel &target = *md.mm();
     MeshModel *source = parameters.getMesh("sourceMesh");
-    if (source == nullptr) return fail("Bake Normal Map: choose the source layer (the undecimated faired mesh)");
+    if (source == nullptr)
+        return fail("Bake Normal Map: choose the source layer (the undecimated faired mesh)");
     if (source == &target)
         return fail("Bake Normal Map: the source layer is the current layer; duplicate the faired layer before "
                     "decimating and bake from the copy that was not decimated");
-    if (target.cm.fn == 0 || source->cm.fn == 0) return fail("Bake Normal Map: the source and the current layer need faces");
+    if (target.cm.fn == 0 || source->cm.fn == 0)
+        return fail("Bake Normal Map: the source and the current layer need faces");
     if (!target.hasDataMask(MeshModel::MM_WEDGTEXCOORD) || !source->hasDataMask(MeshModel::MM_WEDGTEXCOORD))
         return fail("Bake Normal Map: both layers need the texture atlas' coordinates (run Voxel Texture Atlas before "
                     "duplicating and decimating)");
 
     const QString path = besideMesh(target, parameters.getString("normalFile").trimmed().isEmpty()
-                                                 ? normalNameFor(target)
-                                                 : parameters.getString("normalFile").trimmed());
+                                                ? normalNameFor(target)
+                                                : parameters.getString("normalFile").trimmed());
     int size = parameters.getInt("textureSize");
     QString sizeFrom = "given";
     if (size <= 0) {
         // The base colour's side: its PNG beside the normal map (where the pipeline writes both),
         // else beside the mesh.
-        if (target.cm.textures.empty()) return fail("Bake Normal Map: the current layer has no texture; give the texture size");
+        if (target.cm.textures.empty())
+            return fail("Bake Normal Map: the current layer has no texture; give the texture size");
         const QString name = QString::fromStdString(target.cm.textures.front());
         QString texture = QFileInfo(name).isAbsolute() ? name : QFileInfo(path).absoluteDir().absoluteFilePath(name);
-        if (!QFileInfo::exists(texture)) texture = besideMesh(target, name);
+        if (!QFileInfo::exists(texture))
+            texture = besideMesh(target, name);
         const QSize imageSize = QImageReader(texture).size();
         if (!imageSize.isValid())
-            return fail(QString("Bake Normal Map: could not read the size of the base colour texture %1; give the texture size")
-                            .arg(texture));
+            return fail(
+                QString("Bake Normal Map: could not read the size of the base colour texture %1; give the texture size")
+                    .arg(texture));
         // A wide atlas (2:1) gets a square map at its longer side: UVs are normalised per axis, so
         // the layout is the same, with more texels along v.
         size = std::max(imageSize.width(), imageSize.height());
@@ -136,20 +149,25 @@ bool FilterVoxelfairPlugin::applyNormalMap(MeshDocument &md, const RichParameter
     NormalBakeOptions options;
     options.size = size;
     options.dilation = parameters.getInt("dilation");
-    if (cb) cb(10, "Baking the normal map");
+    if (cb)
+        cb(10, "Baking the normal map");
     const NormalMap map = bakeNormalMap(high.view(), low.view(), options);
-    if (!map.ok) return fail(QString("Bake Normal Map: %1").arg(QString::fromStdString(map.message)));
+    if (!map.ok)
+        return fail(QString("Bake Normal Map: %1").arg(QString::fromStdString(map.message)));
 
-    if (cb) cb(80, "Writing the normal map");
+    if (cb)
+        cb(80, "Writing the normal map");
     const QImage image(map.rgba.data(), map.size, map.size, map.size * 4, QImage::Format_RGBA8888);
-    if (!QDir().mkpath(QFileInfo(path).absolutePath()) || !image.convertToFormat(QImage::Format_RGB888).save(path, "PNG"))
+    if (!QDir().mkpath(QFileInfo(path).absolutePath()) ||
+        !image.convertToFormat(QImage::Format_RGB888).save(path, "PNG"))
         return fail(QString("Bake Normal Map: could not write the normal map to %1").arg(path));
     // Exporters that know it (the glTF writer) find the map's file name here.
     auto attribute = vcg::tri::Allocator<CMeshO>::GetPerMeshAttribute<std::string>(target.cm, "voxelfair_normal_map");
     attribute() = QFileInfo(path).fileName().toStdString();
 
     if (restoreParts(target, *source))
-        report("Bake Normal Map: the parts of the source layer (nodes, each face's part) restored on the current layer");
+        report(
+            "Bake Normal Map: the parts of the source layer (nodes, each face's part) restored on the current layer");
     report(QString("Bake Normal Map: %1 texels from layer '%2' (%3 faces) onto %4 faces, %5 x %5 (size from %6), "
                    "MikkTSpace tangents, %7 gutter rings -> %8 in %9 ms")
                .arg(map.texelsBaked)
@@ -162,6 +180,7 @@ bool FilterVoxelfairPlugin::applyNormalMap(MeshDocument &md, const RichParameter
                .arg(path)
                .arg(timer.elapsed()));
     if (map.texelsWithoutSource > 0)
-        report(QString("Bake Normal Map: %1 texels had no source face near their UV and stay flat").arg(map.texelsWithoutSource));
+        report(QString("Bake Normal Map: %1 texels had no source face near their UV and stay flat")
+                   .arg(map.texelsWithoutSource));
     return true;
 }

@@ -43,7 +43,8 @@ struct Grid {
 
 Grid decode(const uint8_t *data, size_t size) {
     Grid g;
-    for (int a = 0; a < 3; ++a) g.side[a] = 1 + (a < int(size) ? data[a] % kMaxGridSide : 0);
+    for (int a = 0; a < 3; ++a)
+        g.side[a] = 1 + (a < int(size) ? data[a] % kMaxGridSide : 0);
     const uint8_t place = size > 3 ? data[3] : 0;
     // Bits 0-2: a one-voxel margin before the grid on x, y, z; bits 3-5: after it; bits 6-7: the
     // z offset, up to the top of the largest volume (lattice keys and face coordinates near 2^11).
@@ -58,7 +59,8 @@ Grid decode(const uint8_t *data, size_t size) {
     g.solid.assign(size_t(g.side[0]) * g.side[1] * g.side[2], 0);
     const uint8_t *bits = data + std::min<size_t>(size, 4);
     const size_t bitCount = 8 * (size - std::min<size_t>(size, 4));
-    if (bitCount == 0) return g;
+    if (bitCount == 0)
+        return g;
     for (size_t i = 0; i < g.solid.size(); ++i) {
         const size_t b = i % bitCount;
         g.solid[i] = (bits[b / 8] >> (b % 8)) & 1;
@@ -97,8 +99,10 @@ Filled fillCavities(const Grid &g) {
         static constexpr int kSteps[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
         for (const auto &d : kSteps) {
             const int nx = x + d[0], ny = y + d[1], nz = z + d[2];
-            if (nx < 0 || ny < 0 || nz < 0 || nx >= px || ny >= py || nz >= pz) continue;
-            if (outside[padded(nx, ny, nz)] || g.at(nx - 1, ny - 1, nz - 1)) continue;
+            if (nx < 0 || ny < 0 || nz < 0 || nx >= px || ny >= py || nz >= pz)
+                continue;
+            if (outside[padded(nx, ny, nz)] || g.at(nx - 1, ny - 1, nz - 1))
+                continue;
             outside[padded(nx, ny, nz)] = 1;
             stack.push_back({nx, ny, nz});
         }
@@ -121,7 +125,8 @@ void checkSurface(const Grid &g, const BoundarySurface &s) {
     const auto filledAt = [&](int x, int y, int z) { return g.inside(x, y, z) && filled.solid[g.index(x, y, z)]; };
     if (s.stats.cavityVoxelsFilled != filled.cavities)
         fail("%zu cavity voxels filled, the reference finds %zu", s.stats.cavityVoxelsFilled, filled.cavities);
-    if (s.quads.size() != 4 * s.quadCount()) fail("%zu quad indices for %zu quads", s.quads.size(), s.quadCount());
+    if (s.quads.size() != 4 * s.quadCount())
+        fail("%zu quad indices for %zu quads", s.quads.size(), s.quadCount());
     checkClosedManifold(s.quads, s.positions.size());
 
     // Lattice points, in grid coordinates.
@@ -129,7 +134,8 @@ void checkSurface(const Grid &g, const BoundarySurface &s) {
     for (size_t v = 0; v < p.size(); ++v)
         for (int a = 0; a < 3; ++a) {
             const float c = s.positions[v][a];
-            if (c != float(int64_t(c)) || c < 0 || c > float(g.volumeSide[a])) fail("vertex %zu is off the lattice", v);
+            if (c != float(int64_t(c)) || c < 0 || c > float(g.volumeSide[a]))
+                fail("vertex %zu is off the lattice", v);
             p[v][a] = int64_t(c) - g.offset[a];
         }
 
@@ -142,35 +148,45 @@ void checkSurface(const Grid &g, const BoundarySurface &s) {
                 if (filledAt(x, y, z))
                     exposedFaces += !filledAt(x - 1, y, z) + !filledAt(x + 1, y, z) + !filledAt(x, y - 1, z) +
                                     !filledAt(x, y + 1, z) + !filledAt(x, y, z - 1) + !filledAt(x, y, z + 1);
-    if (s.quadCount() != exposedFaces) fail("%zu quads for %zu exposed voxel faces", s.quadCount(), exposedFaces);
+    if (s.quadCount() != exposedFaces)
+        fail("%zu quads for %zu exposed voxel faces", s.quadCount(), exposedFaces);
 
     std::vector<uint8_t> covered(g.solid.size() * 6, 0);
     int64_t sixVolume = 0;
     for (size_t q = 0; q < s.quadCount(); ++q) {
         const std::array<int64_t, 3> *c[4];
-        for (int k = 0; k < 4; ++k) c[k] = &p[s.quads[4 * q + size_t(k)]];
+        for (int k = 0; k < 4; ++k)
+            c[k] = &p[s.quads[4 * q + size_t(k)]];
         int64_t e[4][3], normal[3];
         for (int k = 0; k < 4; ++k)
-            for (int a = 0; a < 3; ++a) e[k][a] = (*c[(k + 1) % 4])[a] - (*c[k])[a];
+            for (int a = 0; a < 3; ++a)
+                e[k][a] = (*c[(k + 1) % 4])[a] - (*c[k])[a];
         for (int k = 0; k < 4; ++k)
-            if (std::abs(e[k][0]) + std::abs(e[k][1]) + std::abs(e[k][2]) != 1) fail("quad %zu is not a unit square", q);
+            if (std::abs(e[k][0]) + std::abs(e[k][1]) + std::abs(e[k][2]) != 1)
+                fail("quad %zu is not a unit square", q);
         for (int a = 0; a < 3; ++a)
-            if (e[2][a] != -e[0][a] || e[3][a] != -e[1][a]) fail("quad %zu is not a unit square", q);
-        for (int a = 0; a < 3; ++a) normal[a] = e[0][(a + 1) % 3] * e[1][(a + 2) % 3] - e[0][(a + 2) % 3] * e[1][(a + 1) % 3];
+            if (e[2][a] != -e[0][a] || e[3][a] != -e[1][a])
+                fail("quad %zu is not a unit square", q);
+        for (int a = 0; a < 3; ++a)
+            normal[a] = e[0][(a + 1) % 3] * e[1][(a + 2) % 3] - e[0][(a + 2) % 3] * e[1][(a + 1) % 3];
         int axis = 0;
-        while (axis < 2 && normal[axis] == 0) ++axis;
+        while (axis < 2 && normal[axis] == 0)
+            ++axis;
         const bool positive = normal[axis] > 0;
         int voxel[3];
         for (int a = 0; a < 3; ++a)
             voxel[a] = int(std::min(std::min((*c[0])[a], (*c[1])[a]), std::min((*c[2])[a], (*c[3])[a])));
-        if (positive) --voxel[axis];  // the outward normal points away from the solid voxel
+        if (positive)
+            --voxel[axis];  // the outward normal points away from the solid voxel
         int beyond[3] = {voxel[0], voxel[1], voxel[2]};
         beyond[axis] += positive ? 1 : -1;
         if (!filledAt(voxel[0], voxel[1], voxel[2]) || filledAt(beyond[0], beyond[1], beyond[2]))
             fail("quad %zu does not face outwards from a solid voxel into an empty cell", q);
-        if (!g.at(voxel[0], voxel[1], voxel[2])) fail("quad %zu bounds a filled cavity voxel", q);
+        if (!g.at(voxel[0], voxel[1], voxel[2]))
+            fail("quad %zu bounds a filled cavity voxel", q);
         uint8_t &seen = covered[g.index(voxel[0], voxel[1], voxel[2]) * 6 + size_t(2 * axis + positive)];
-        if (seen) fail("quad %zu covers a face covered already", q);
+        if (seen)
+            fail("quad %zu covers a face covered already", q);
         seen = 1;
         const Voxel want = payloadAt(voxel[0], voxel[1], voxel[2]);
         if (s.quadVoxels[q].colour != want.colour || s.quadVoxels[q].normal != want.normal)

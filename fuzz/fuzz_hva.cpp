@@ -24,7 +24,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     check(bytes.size() == size, "the writer's file differs in size");
     const HvaAnimation again = readHva(bytes.data(), bytes.size());
     for (std::string &name : animation.sectionNames)
-        if (name.size() > 15) name.resize(15);  // the writer keeps a terminating NUL, as for VXL
+        if (name.size() > 15)
+            name.resize(15);  // the writer keeps a terminating NUL, as for VXL
     check(again.frameCount == animation.frameCount && again.sectionNames == animation.sectionNames &&
               again.matrices == animation.matrices,
           "written animation reads back different");

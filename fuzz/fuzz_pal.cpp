@@ -25,6 +25,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
         }
     }
     // VXL headers give the remap range as two bytes; any order and any values must be safe.
-    if (size >= 5) remapHouseColours(palette, Rgb{data[0], data[1], data[2]}, int8_t(data[3]), data[4]);
+    if (size >= 5)
+        remapHouseColours(palette, Rgb{data[0], data[1], data[2]}, int8_t(data[3]), data[4]);
     return 0;
 }

@@ -57,11 +57,13 @@ void hvaSeeds(const fs::path &root) {
 
 void palSeeds(const fs::path &root) {
     std::vector<uint8_t> binary;
-    for (const Rgb &c : defaultPalette().colours) binary.insert(binary.end(), {uint8_t(c.r >> 2), uint8_t(c.g >> 2), uint8_t(c.b >> 2)});
+    for (const Rgb &c : defaultPalette().colours)
+        binary.insert(binary.end(), {uint8_t(c.r >> 2), uint8_t(c.g >> 2), uint8_t(c.b >> 2)});
     save(root, "fuzz_pal", "binary.pal", binary);
     for (const char *ending : {"\r\n", "\n"}) {
         std::string text = std::string("JASC-PAL") + ending + "0100" + ending + "16" + ending;
-        for (int i = 0; i < 16; ++i) text += std::to_string(i * 16) + " " + std::to_string(255 - i) + " 7" + ending;
+        for (int i = 0; i < 16; ++i)
+            text += std::to_string(i * 16) + " " + std::to_string(255 - i) + " 7" + ending;
         save(root, "fuzz_pal", std::string("jasc") + (ending[0] == '\r' ? "_crlf" : "_lf") + ".pal",
              std::vector<uint8_t>(text.begin(), text.end()));
     }
@@ -80,11 +82,17 @@ void voxSeeds(const fs::path &root) {
     w.layer(1, {{"_hidden", "0"}, {"_name", "layer"}}).palette([](int i) { return uint32_t(i) * 0x01010101u; });
     save(root, "fuzz_vox", "scene_graph.vox", w.bytes(200));
     save(root, "fuzz_vox", "pack_animation.vox",
-         VoxWriter().pack(3).model(1, 1, 1, {{0, 0, 0, 1}}).model(2, 1, 1, {{1, 0, 0, 2}}).model(1, 1, 3, {{0, 0, 2, 3}}).bytes());
+         VoxWriter()
+             .pack(3)
+             .model(1, 1, 1, {{0, 0, 0, 1}})
+             .model(2, 1, 1, {{1, 0, 0, 2}})
+             .model(1, 1, 3, {{0, 0, 2, 3}})
+             .bytes());
     save(root, "fuzz_vox", "sponge.vox", VoxWriter().model(9, 9, 9, mengerSponge(2)).bytes());
     // Teardown's TDCZ: an unfinished zlib stream of the dense volume (teardown.vox seeds it too).
     Bytes dense(4 * 3 * 5, 0);
-    for (size_t i = 0; i < dense.size(); i += 3) dense[i] = uint8_t(1 + i % 7);
+    for (size_t i = 0; i < dense.size(); i += 3)
+        dense[i] = uint8_t(1 + i % 7);
     save(root, "fuzz_vox", "teardown_tdcz.vox",
          VoxWriter().size(4, 3, 5).chunk("TDCZ", tdczContent(4, 3, 5, dense)).model(1, 1, 1, {{0, 0, 0, 2}}).bytes());
 }
@@ -99,16 +107,19 @@ void extractionSeeds(const fs::path &root) {
     std::vector<bool> bits;
     for (int z = 0; z < 5; ++z)
         for (int y = 0; y < 5; ++y)
-            for (int x = 0; x < 5; ++x) bits.push_back(!(x == 2 && y == 2 && z == 2));
+            for (int x = 0; x < 5; ++x)
+                bits.push_back(!(x == 2 && y == 2 && z == 2));
     for (size_t i = 0; i < bits.size(); i += 8) {
         uint8_t byte = 0;
-        for (size_t b = 0; b < 8 && i + b < bits.size(); ++b) byte |= uint8_t(bits[i + b]) << b;
+        for (size_t b = 0; b < 8 && i + b < bits.size(); ++b)
+            byte |= uint8_t(bits[i + b]) << b;
         shell.push_back(byte);
     }
     save(root, "fuzz_extraction", "shell_with_cavity", shell);
     std::mt19937 rng(7);
     std::vector<uint8_t> noise{11, 9, 13, 0x12};
-    for (int i = 0; i < 200; ++i) noise.push_back(uint8_t(rng()));
+    for (int i = 0; i < 200; ++i)
+        noise.push_back(uint8_t(rng()));
     save(root, "fuzz_extraction", "noise", noise);
 }
 

@@ -25,7 +25,8 @@ void placeAndMesh(const VoxFile &file, int frame) {
               "a part points outside the file's models");
         voxels += part.volume->voxelCount();
     }
-    if (scene.parts.size() > kMaxMeshedParts || voxels > kMaxMeshedVoxels) return;
+    if (scene.parts.size() > kMaxMeshedParts || voxels > kMaxMeshedVoxels)
+        return;
     const SceneSurface surface = extractSceneSurface(scene);
     check(surface.partQuadCounts.size() == scene.parts.size(), "a part without its quad count");
     checkClosedManifold(surface.quads, surface.positions.size());
@@ -42,7 +43,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     }
     check(!file.models.empty() && file.frameCount >= 1, "accepted a file without models or frames");
     // First, middle and last frame: keyframe lookup at both ends and in between.
-    for (int frame : {0, file.frameCount / 2, file.frameCount - 1}) placeAndMesh(file, frame);
+    for (int frame : {0, file.frameCount / 2, file.frameCount - 1})
+        placeAndMesh(file, frame);
     try {
         voxScene(file, VoxSceneOptions{file.frameCount});
         fail("frame %d past the last one was accepted", file.frameCount);

@@ -22,11 +22,13 @@ void checkRoundTrip(VxlModel model) {
         fail("the writer's bytes do not read back: %s", e.what());
     }
     for (VxlSection &section : model.sections) {
-        if (section.name.size() > 15) section.name.resize(15);
+        if (section.name.size() > 15)
+            section.name.resize(15);
         section.clampedNormals = 0;  // the clamped indices are written, and read back unclamped
     }
     const std::string difference = fixtures::firstDifference(model, again);
-    if (!difference.empty()) fail("written model reads back different: %s", difference.c_str());
+    if (!difference.empty())
+        fail("written model reads back different: %s", difference.c_str());
 }
 
 }  // namespace

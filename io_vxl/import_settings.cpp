@@ -44,21 +44,23 @@ float envFloat(const char *name, float fallback) {
 int houseColourIndexFromEnv() {
     const QString wanted = env("VOXELFAIR_HOUSE_COLOUR").trimmed();
     for (size_t i = 1; i < kHouseColours.size(); ++i)
-        if (wanted.compare(kHouseColours[i].name, Qt::CaseInsensitive) == 0) return int(i);
+        if (wanted.compare(kHouseColours[i].name, Qt::CaseInsensitive) == 0)
+            return int(i);
     return 0;
 }
 
 }  // namespace
 
 void declareImportParameters(RichParameterList &parameters, const QStringList &sectionNames) {
-    parameters.addParam(RichOpenFile(
-        "paletteFile", env("VOXELFAIR_PALETTE"), QStringList() << "*.pal", "Palette file (.pal)",
-        "A Westwood 6-bit .pal (768 bytes) or JASC-PAL file giving the voxels' colours, e.g. unittem.pal. "
-        "Empty: the palette embedded in the .vxl, or the built-in default palette when the embedded one "
-        "is all zeros."));
+    parameters.addParam(
+        RichOpenFile("paletteFile", env("VOXELFAIR_PALETTE"), QStringList() << "*.pal", "Palette file (.pal)",
+                     "A Westwood 6-bit .pal (768 bytes) or JASC-PAL file giving the voxels' colours, e.g. unittem.pal. "
+                     "Empty: the palette embedded in the .vxl, or the built-in default palette when the embedded one "
+                     "is all zeros."));
 
     QStringList houseNames;
-    for (const NamedColour &c : kHouseColours) houseNames << c.name;
+    for (const NamedColour &c : kHouseColours)
+        houseNames << c.name;
     parameters.addParam(RichEnum("houseColour", houseColourIndexFromEnv(), houseNames, "House colour",
                                  "Regenerates palette entries 16..31 (the player colour in the game) as a "
                                  "brightness ramp of this colour, as the game tools do."));
@@ -68,7 +70,8 @@ void declareImportParameters(RichParameterList &parameters, const QStringList &s
 
     QStringList sections;
     sections << "All sections";
-    for (int i = 0; i < sectionNames.size(); ++i) sections << QString("%1: %2").arg(i).arg(sectionNames[i]);
+    for (int i = 0; i < sectionNames.size(); ++i)
+        sections << QString("%1: %2").arg(i).arg(sectionNames[i]);
     parameters.addParam(RichEnum("section", envInt("VOXELFAIR_SECTION", -1) + 1, sections, "Section",
                                  "Import every section, or only one."));
 
@@ -96,16 +99,23 @@ void declareVoxImportParameters(RichParameterList &parameters, int frameCount) {
 
 ImportSettings readImportSettings(const RichParameterList &parameters) {
     ImportSettings s;
-    if (parameters.hasParameter("paletteFile")) s.paletteFile = parameters.getOpenFileName("paletteFile").trimmed();
+    if (parameters.hasParameter("paletteFile"))
+        s.paletteFile = parameters.getOpenFileName("paletteFile").trimmed();
     if (parameters.hasParameter("houseColour")) {
         const int house = parameters.getEnum("houseColour");
-        if (house > 0 && house < int(kHouseColours.size())) s.houseColour = kHouseColours[size_t(house)].rgb;
+        if (house > 0 && house < int(kHouseColours.size()))
+            s.houseColour = kHouseColours[size_t(house)].rgb;
     }
-    if (parameters.hasParameter("frame")) s.frame = parameters.getInt("frame");
-    if (parameters.hasParameter("section")) s.section = parameters.getEnum("section") - 1;
-    if (parameters.hasParameter("applyTransforms")) s.applyTransforms = parameters.getBool("applyTransforms");
-    if (parameters.hasParameter("loadUnit")) s.loadUnit = parameters.getBool("loadUnit");
-    if (parameters.hasParameter("turretOffset")) s.turretOffsetLeptons = parameters.getFloat("turretOffset");
+    if (parameters.hasParameter("frame"))
+        s.frame = parameters.getInt("frame");
+    if (parameters.hasParameter("section"))
+        s.section = parameters.getEnum("section") - 1;
+    if (parameters.hasParameter("applyTransforms"))
+        s.applyTransforms = parameters.getBool("applyTransforms");
+    if (parameters.hasParameter("loadUnit"))
+        s.loadUnit = parameters.getBool("loadUnit");
+    if (parameters.hasParameter("turretOffset"))
+        s.turretOffsetLeptons = parameters.getFloat("turretOffset");
     return s;
 }
 

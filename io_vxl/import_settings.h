@@ -27,7 +27,7 @@ struct ImportSettings {
     int frame = 0;
     int section = -1;  // -1: all
     bool applyTransforms = true;
-    bool loadUnit = true;             // also NAMEtur.vxl and NAMEbarl.vxl (+ .hva) beside NAME.vxl
+    bool loadUnit = true;  // also NAMEtur.vxl and NAMEbarl.vxl (+ .hva) beside NAME.vxl
     float turretOffsetLeptons = 0.0f;
 };
 

@@ -32,9 +32,11 @@ bool isVox(const QString &format) { return format.compare("vox", Qt::CaseInsensi
 // meshlabserver changes into the file's folder before calling open() but passes the path as the
 // user wrote it, so a relative path with folders no longer resolves: fall back to the bare name.
 QString resolveInputPath(const QString &fileName) {
-    if (QFileInfo::exists(fileName)) return QFileInfo(fileName).absoluteFilePath();
+    if (QFileInfo::exists(fileName))
+        return QFileInfo(fileName).absoluteFilePath();
     const QString bare = QFileInfo(fileName).fileName();
-    if (QFileInfo::exists(bare)) return QFileInfo(bare).absoluteFilePath();
+    if (QFileInfo::exists(bare))
+        return QFileInfo(bare).absoluteFilePath();
     return fileName;
 }
 
@@ -43,7 +45,8 @@ QString companionPath(const QString &vxlPath, const QString &extension) {
     const QFileInfo info(vxlPath);
     for (const QString &candidate : {extension.toLower(), extension.toUpper()}) {
         const QString path = info.absoluteDir().filePath(info.completeBaseName() + "." + candidate);
-        if (QFileInfo::exists(path)) return path;
+        if (QFileInfo::exists(path))
+            return path;
     }
     return QString();
 }
@@ -110,7 +113,8 @@ bool IoVxlPlugin::open(const QString &format, const QString &fileName, MeshModel
             openVox(path, settings, m, mask, cb);
         else
             openVxl(path, settings, m, mask, cb, current);
-        if (cb) cb(100, "Done");
+        if (cb)
+            cb(100, "Done");
         return true;
     } catch (const FormatError &e) {
         // Readers say what and where; the file's name comes first.
@@ -159,7 +163,8 @@ UnitFile readUnitFile(const QString &path, UnitRole role, bool withHva, QString 
 
 void IoVxlPlugin::openVxl(const QString &path, const ImportSettings &settings, MeshModel &m, int &mask,
                           vcg::CallBackPos *cb, QString &current) {
-    if (cb) cb(0, "Reading VXL");
+    if (cb)
+        cb(0, "Reading VXL");
     VxlSceneOptions options;
     options.section = settings.section;
     options.frame = settings.frame;
@@ -191,13 +196,16 @@ void IoVxlPlugin::openVxl(const QString &path, const ImportSettings &settings, M
         for (UnitRole role : {UnitRole::Turret, UnitRole::Barrel}) {
             const QString companion =
                 findSibling(path, QString::fromStdString(unitCompanionStem(local(stem), role)), "vxl");
-            if (companion.isEmpty()) continue;
+            if (companion.isEmpty())
+                continue;
             QString where = companion;
             try {
                 UnitFile file = readUnitFile(companion, role, settings.applyTransforms, where);
                 VxlSceneOptions o = options;
-                if (file.hva) o.frame = std::min(o.frame, file.hva->frameCount - 1);
-                if (file.hva) where = companionPath(companion, "hva");
+                if (file.hva)
+                    o.frame = std::min(o.frame, file.hva->frameCount - 1);
+                if (file.hva)
+                    where = companionPath(companion, "hva");
                 vxlScene(file.model, file.hva ? &*file.hva : nullptr, o);  // checks the pair
                 loaded << QFileInfo(companion).fileName() + (file.hva ? " (+ .hva)" : "");
                 files.push_back(std::move(file));
@@ -217,11 +225,13 @@ void IoVxlPlugin::openVxl(const QString &path, const ImportSettings &settings, M
         scene = std::move(placed.scene);
         nodes = std::move(placed.nodes);
         sections = 0;
-        for (const UnitFile &file : files) sections += file.model.sections.size();
+        for (const UnitFile &file : files)
+            sections += file.model.sections.size();
     }
 
     const SceneSurface surface = meshScene(path, scene, m, mask, cb);
-    if (!nodes.empty()) storeExportScene(nodes, m.cm);
+    if (!nodes.empty())
+        storeExportScene(nodes, m.cm);
     if (files.size() > 1)
         report(QString("%1: unit of %2 files: %3; turret offset %4 leptons")
                    .arg(QFileInfo(path).fileName())
@@ -241,13 +251,16 @@ void IoVxlPlugin::openVxl(const QString &path, const ImportSettings &settings, M
                .arg(placement));
     size_t clamped = 0;
     for (const UnitFile &file : files)
-        for (const VxlSection &s : file.model.sections) clamped += s.clampedNormals;
-    if (clamped > 0) report(QString("%1 voxel normal indices were past the normal table and were clamped").arg(clamped));
+        for (const VxlSection &s : file.model.sections)
+            clamped += s.clampedNormals;
+    if (clamped > 0)
+        report(QString("%1 voxel normal indices were past the normal table and were clamped").arg(clamped));
 }
 
 void IoVxlPlugin::openVox(const QString &path, const ImportSettings &settings, MeshModel &m, int &mask,
                           vcg::CallBackPos *cb) {
-    if (cb) cb(0, "Reading VOX");
+    if (cb)
+        cb(0, "Reading VOX");
     const std::vector<uint8_t> bytes = readBytes(path);
     const VoxFile file = readVox(bytes.data(), bytes.size());
     const VoxelScene scene = voxScene(file, VoxSceneOptions{settings.frame});
@@ -266,12 +279,16 @@ void IoVxlPlugin::openVox(const QString &path, const ImportSettings &settings, M
 SceneSurface IoVxlPlugin::meshScene(const QString &path, const VoxelScene &scene, MeshModel &m, int &mask,
                                     vcg::CallBackPos *cb) {
     size_t voxels = 0;
-    for (const PlacedVolume &part : scene.parts) voxels += part.volume->voxelCount();
-    if (voxels == 0) throw FormatError("there are no voxels to import (every chosen part is empty)");
+    for (const PlacedVolume &part : scene.parts)
+        voxels += part.volume->voxelCount();
+    if (voxels == 0)
+        throw FormatError("there are no voxels to import (every chosen part is empty)");
 
-    if (cb) cb(30, "Extracting the voxel surface");
+    if (cb)
+        cb(30, "Extracting the voxel surface");
     SceneSurface surface = extractSceneSurface(scene);
-    if (cb) cb(80, "Building the mesh");
+    if (cb)
+        cb(80, "Building the mesh");
     mask |= sceneImportMask();
     m.Enable(mask);
     sceneToMeshLab(surface, m);

@@ -23,8 +23,8 @@ public:
     QList<Format> exportFormats() const override;
     void GetExportMaskCapability(QString &format, int &capability, int &defaultBits) const override;
     void initPreOpenParameter(const QString &format, const QString &fileName, RichParameterList &parameters) override;
-    bool open(const QString &format, const QString &fileName, MeshModel &m, int &mask, const RichParameterList &parameters,
-              vcg::CallBackPos *cb = nullptr, QWidget *parent = nullptr) override;
+    bool open(const QString &format, const QString &fileName, MeshModel &m, int &mask,
+              const RichParameterList &parameters, vcg::CallBackPos *cb = nullptr, QWidget *parent = nullptr) override;
     bool save(const QString &format, const QString &fileName, MeshModel &m, const int mask,
               const RichParameterList &parameters, vcg::CallBackPos *cb, QWidget *parent) override;
 

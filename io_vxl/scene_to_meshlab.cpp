@@ -29,7 +29,8 @@ void sceneToMeshLab(const SceneSurface &surface, MeshModel &model) {
         // MeshLab treats the pair as one polygon (edge 2 of the first, edge 0 of the second).
         const uint32_t triangles[2][3] = {{c[0], c[1], c[2]}, {c[0], c[2], c[3]}};
         for (int t = 0; t < 2; ++t, ++fi) {
-            for (int k = 0; k < 3; ++k) fi->V(k) = &m.vert[triangles[t][k]];
+            for (int k = 0; k < 3; ++k)
+                fi->V(k) = &m.vert[triangles[t][k]];
             fi->SetF(t == 0 ? 2 : 0);
             fi->C() = vcg::Color4b(colour.r, colour.g, colour.b, 255);
             fi->Q() = CMeshO::ScalarType(surface.quadParts[q]);

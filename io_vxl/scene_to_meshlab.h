@@ -31,7 +31,8 @@ inline void storeExportScene(const ExportScene &scene, CMeshO &m) {
 
 // The stored scene, or null when the mesh has none (not imported by io_vxl).
 inline const ExportScene *findExportScene(CMeshO &m) {
-    if (!vcg::tri::HasPerMeshAttribute(m, kExportSceneAttributeName)) return nullptr;
+    if (!vcg::tri::HasPerMeshAttribute(m, kExportSceneAttributeName))
+        return nullptr;
     auto handle = vcg::tri::Allocator<CMeshO>::FindPerMeshAttribute<ExportScene>(m, kExportSceneAttributeName);
     return vcg::tri::Allocator<CMeshO>::IsValidHandle(m, handle) ? &handle() : nullptr;
 }

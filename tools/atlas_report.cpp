@@ -85,16 +85,17 @@ void report(const TestMesh &mesh, int textureSize, float texelsPerUnit, const ch
         }
         const AtlasMeasures m = measureAtlas(view, atlas.charts, layout);
         const ColourFidelity fid = measureColourFidelity(view, layout, texture);
-        std::printf("  %-8s %6d %8.3f %7.2f %6.2f %6zu %8zu %8zu %9.5f %9.4f %7.3f %7.3f %6zu %8.1f\n",
-                    toString(mode), layout.size, layout.texelsPerUnit, 100 * m.packingEfficiency,
-                    100 * m.centreEfficiency, m.overlappingChartTexels, m.overlappingCentres, m.facesWithoutUvArea,
-                    m.maxStretch, m.maxInverseStretch, 100 * fid.nearest(), 100 * fid.bilinear(),
-                    atlas.charts.separatedFaces, atlasMs);
-        std::printf("           packings tried %zu, min UV inradius %.2f texels, guaranteed faces' samples: "
-                    "nearest %zu/%zu, bilinear %zu/%zu, mean 1/cos %.4f, crisp guaranteed: %s (%zu thin, %zu crowded)\n",
-                    layout.packAttempts, fid.minInradius, fid.guaranteedNearestMatches, fid.guaranteedNearest,
-                    fid.guaranteedBilinearMatches, fid.guaranteedBilinear, m.meanInverseStretch,
-                    atlas.crispGuaranteed ? "yes" : "no", atlas.crowded.thinFaces, atlas.crowded.crowdedFaces);
+        std::printf("  %-8s %6d %8.3f %7.2f %6.2f %6zu %8zu %8zu %9.5f %9.4f %7.3f %7.3f %6zu %8.1f\n", toString(mode),
+                    layout.size, layout.texelsPerUnit, 100 * m.packingEfficiency, 100 * m.centreEfficiency,
+                    m.overlappingChartTexels, m.overlappingCentres, m.facesWithoutUvArea, m.maxStretch,
+                    m.maxInverseStretch, 100 * fid.nearest(), 100 * fid.bilinear(), atlas.charts.separatedFaces,
+                    atlasMs);
+        std::printf(
+            "           packings tried %zu, min UV inradius %.2f texels, guaranteed faces' samples: "
+            "nearest %zu/%zu, bilinear %zu/%zu, mean 1/cos %.4f, crisp guaranteed: %s (%zu thin, %zu crowded)\n",
+            layout.packAttempts, fid.minInradius, fid.guaranteedNearestMatches, fid.guaranteedNearest,
+            fid.guaranteedBilinearMatches, fid.guaranteedBilinear, m.meanInverseStretch,
+            atlas.crispGuaranteed ? "yes" : "no", atlas.crowded.thinFaces, atlas.crowded.crowdedFaces);
         if (ppmDir) {
             std::string name = mesh.name + "_" + toString(mode) + ".ppm";
             for (char &ch : name)
@@ -167,7 +168,8 @@ void reportShared(const char *ppmDir) {
     options.pack.fillTexture = !noFill;
     options.pack.allowWide = !square;
     options.charts.minSeedCosine = cone;
-    std::printf("\nShared models, chain at the filter's defaults (%g texels per voxel, max %d):\n", double(options.pack.texelsPerUnit), options.pack.maxTextureSize);
+    std::printf("\nShared models, chain at the filter's defaults (%g texels per voxel, max %d):\n",
+                double(options.pack.texelsPerUnit), options.pack.maxTextureSize);
     std::printf("  %-14s %7s %6s %11s %8s %7s %6s %8s %7s %7s %6s %5s %8s\n", "model", "faces", "charts", "texture",
                 "texel/v", "cover%", "ctr%", "ch/kface", "near%", "bilin%", "sep", "over", "atlas ms");
     std::vector<double> covers;
@@ -203,8 +205,8 @@ void reportShared(const char *ppmDir) {
                     file.filename().c_str(), view.faceCount, atlas.charts.chartCount(), texture.c_str(),
                     atlas.layout.texelsPerUnit * mesh.voxelSize, 100 * m.packingEfficiency, 100 * m.centreEfficiency,
                     1000.0 * double(atlas.charts.chartCount()) / double(view.faceCount), 100 * fid.nearest(),
-                    100 * fid.bilinear(), atlas.charts.separatedFaces,
-                    m.overlappingChartTexels + m.overlappingCentres, ms);
+                    100 * fid.bilinear(), atlas.charts.separatedFaces, m.overlappingChartTexels + m.overlappingCentres,
+                    ms);
         if (ppmDir)
             writePpm(std::string(ppmDir) + "/" + file.stem().string() + "_shared.ppm", atlas.texture);
     }
@@ -241,7 +243,10 @@ int main(int argc, char **argv) {
         else if (!std::strcmp(argv[i], "--gutter") && i + 1 < argc)
             gutter = std::atoi(argv[++i]);
         else {
-            std::fprintf(stderr, "usage: %s [--all] [--models] [--shared [--only NAME] [--no-fill] [--square] [--cone COS]] [--ppm DIR] [--gutter N]\n", argv[0]);
+            std::fprintf(stderr,
+                         "usage: %s [--all] [--models] [--shared [--only NAME] [--no-fill] [--square] [--cone COS]] "
+                         "[--ppm DIR] [--gutter N]\n",
+                         argv[0]);
             return 2;
         }
     }

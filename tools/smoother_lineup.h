@@ -121,8 +121,11 @@ inline std::string familyPictures(const std::filesystem::path &folder, int size)
         std::vector<uint32_t> offsets(surface.quadCount() + 1);
         for (size_t q = 0; q < offsets.size(); ++q)
             offsets[q] = uint32_t(4 * q);
-        std::vector<uint32_t> triangles(3 * countFanTriangles({nullptr, 0, offsets.data(), nullptr, surface.quadCount()}));
-        triangulatePolygons({nullptr, surface.positions.size(), offsets.data(), surface.quads.data(), surface.quadCount()}, triangles.data(), nullptr);
+        std::vector<uint32_t> triangles(3 *
+                                        countFanTriangles({nullptr, 0, offsets.data(), nullptr, surface.quadCount()}));
+        triangulatePolygons(
+            {nullptr, surface.positions.size(), offsets.data(), surface.quads.data(), surface.quadCount()},
+            triangles.data(), nullptr);
         std::vector<std::pair<std::string, std::pair<std::vector<glm::vec3>, std::vector<uint32_t>>>> panels;
         panels.push_back({"raw voxels", {surface.positions, triangles}});
 #ifdef VOXELFAIR_HAVE_VTK
@@ -130,7 +133,8 @@ inline std::string familyPictures(const std::filesystem::path &folder, int size)
         panels.push_back({"VTK windowed sinc", {vtk.positions, vtk.triangles}});
 #endif
         std::vector<glm::vec3> paper = surface.positions, ours = surface.positions;
-        fairModifiedLanczos({paper.data(), paper.size(), offsets.data(), surface.quads.data(), surface.quadCount()}, nullptr);
+        fairModifiedLanczos({paper.data(), paper.size(), offsets.data(), surface.quads.data(), surface.quadCount()},
+                            nullptr);
         fairConstrained({ours.data(), ours.size(), offsets.data(), surface.quads.data(), surface.quadCount()}, nullptr);
         panels.push_back({"paper, 1 pass", {paper, triangles}});
         panels.push_back({"constrained", {ours, triangles}});

@@ -35,9 +35,8 @@ int main(int argc, char **argv) {
     }
     try {
         const std::string extension = std::filesystem::path(input).extension().string();
-        std::unique_ptr<pipeline::Model> model = extension == ".vox" || extension == ".VOX"
-                                                     ? pipeline::loadVox(input)
-                                                     : pipeline::loadVxl(input, palettes);
+        std::unique_ptr<pipeline::Model> model =
+            extension == ".vox" || extension == ".VOX" ? pipeline::loadVox(input) : pipeline::loadVxl(input, palettes);
         const lineup::TriangleSurface surface = lineup::vtkSurface(*model);
         const std::string partial = output + ".part";
         {
@@ -49,8 +48,8 @@ int main(int argc, char **argv) {
             for (const glm::vec3 &p : surface.displayPositions)
                 out << p.x << ' ' << p.y << ' ' << p.z << '\n';
             for (size_t t = 0; t + 2 < surface.triangles.size(); t += 3)
-                out << "3 " << surface.triangles[t] << ' ' << surface.triangles[t + 1] << ' ' << surface.triangles[t + 2]
-                    << '\n';
+                out << "3 " << surface.triangles[t] << ' ' << surface.triangles[t + 1] << ' '
+                    << surface.triangles[t + 2] << '\n';
             if (!out) {
                 std::fprintf(stderr, "voxelfair_vtk_smooth: %s: could not write\n", output.c_str());
                 return 1;

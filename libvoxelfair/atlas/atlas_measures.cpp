@@ -103,7 +103,8 @@ ColourFidelity measureColourFidelity(const AtlasMesh &mesh, const AtlasLayout &l
         return r;
     const int size = texture.width, height = texture.height;
     auto nearest = [&](glm::dvec2 p) {
-        const int x = std::clamp(int(std::floor(p.x)), 0, size - 1), y = std::clamp(int(std::floor(p.y)), 0, height - 1);
+        const int x = std::clamp(int(std::floor(p.x)), 0, size - 1),
+                  y = std::clamp(int(std::floor(p.y)), 0, height - 1);
         return glm::u8vec3(texture.texel(x, y));
     };
     auto bilinear = [&](glm::dvec2 p) {
@@ -111,7 +112,8 @@ ColourFidelity measureColourFidelity(const AtlasMesh &mesh, const AtlasLayout &l
         glm::dvec3 sum(0.0);
         for (int dy = 0; dy < 2; ++dy)
             for (int dx = 0; dx < 2; ++dx) {
-                const int x = std::clamp(int(base.x) + dx, 0, size - 1), y = std::clamp(int(base.y) + dy, 0, height - 1);
+                const int x = std::clamp(int(base.x) + dx, 0, size - 1),
+                          y = std::clamp(int(base.y) + dy, 0, height - 1);
                 const double k = (dx ? w.x : 1 - w.x) * (dy ? w.y : 1 - w.y);
                 sum += glm::dvec3(glm::u8vec3(texture.texel(x, y))) * k;
             }

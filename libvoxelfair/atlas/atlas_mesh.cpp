@@ -35,8 +35,8 @@ AtlasStatus validateAtlasMesh(const AtlasMesh &mesh, std::string *message) {
     if (mesh.faceTexelScale)
         for (size_t f = 0; f < mesh.faceCount; ++f)
             if (!(mesh.faceTexelScale[f] > 0) || !std::isfinite(mesh.faceTexelScale[f]))
-                return fail(AtlasStatus::InvalidInput, "face " + std::to_string(f) +
-                                                           " has a texel scale that is not positive and finite");
+                return fail(AtlasStatus::InvalidInput,
+                            "face " + std::to_string(f) + " has a texel scale that is not positive and finite");
     if (message)
         message->clear();
     return AtlasStatus::Ok;

@@ -53,8 +53,8 @@ struct AtlasTexture {
     // store them: texel (x, y) of the layout (y up) is at row height - 1 - y.
     std::vector<uint8_t> rgba;
     BakeSource source = BakeSource::FaceColours;  // what was actually baked
-    int dilation = 0;                              // rings actually filled
-    std::string note;                              // why the source differs from the request, if it does
+    int dilation = 0;                             // rings actually filled
+    std::string note;                             // why the source differs from the request, if it does
 
     // The texel at layout coordinates (x, y), y up.
     glm::u8vec4 texel(int x, int y) const {

@@ -30,8 +30,7 @@ void dilateRow(const uint8_t *in, uint8_t *out, int n, int r) {
 
 }  // namespace
 
-bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int padding, int maxSide,
-                         ChartMasks &masks) {
+bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int padding, int maxSide, ChartMasks &masks) {
     masks.charts.assign(charts.chartCount(), ChartMask{});
     masks.profiles.clear();
     masks.texelsPerUnit = texelsPerUnit;
@@ -51,14 +50,13 @@ bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int pa
         int bx0 = w, bx1 = -1, by0 = h, by1 = -1;  // the footprint's box
         for (size_t i = charts.chartFirstFace[c]; i < charts.chartFirstFace[c + 1]; ++i) {
             const glm::vec2 *uv = &charts.wedgeUv[3 * i];
-            rasterConservativeSpans(glm::dvec2(uv[0]) * m.scale + double(border),
-                                    glm::dvec2(uv[1]) * m.scale + double(border),
-                                    glm::dvec2(uv[2]) * m.scale + double(border), kMaskMargin, w, h,
-                                    [&](int y, int xl, int xr) {
-                                        std::memset(&bits[size_t(y) * w + xl], 1, size_t(xr - xl + 1));
-                                        bx0 = std::min(bx0, xl), bx1 = std::max(bx1, xr);
-                                        by0 = std::min(by0, y), by1 = std::max(by1, y);
-                                    });
+            rasterConservativeSpans(
+                glm::dvec2(uv[0]) * m.scale + double(border), glm::dvec2(uv[1]) * m.scale + double(border),
+                glm::dvec2(uv[2]) * m.scale + double(border), kMaskMargin, w, h, [&](int y, int xl, int xr) {
+                    std::memset(&bits[size_t(y) * w + xl], 1, size_t(xr) - size_t(xl) + 1);
+                    bx0 = std::min(bx0, xl), bx1 = std::max(bx1, xr);
+                    by0 = std::min(by0, y), by1 = std::max(by1, y);
+                });
         }
         if (bx1 < 0) {  // nothing rasterised (cannot happen for a chart with area): keep one texel
             bx0 = bx1 = by0 = by1 = border;

@@ -28,9 +28,7 @@ struct ChartMask {
     const int16_t *colBottom(const std::vector<int16_t> &p) const { return p.data() + profile; }
     const int16_t *colTop(const std::vector<int16_t> &p) const { return p.data() + profile + width; }
     const int16_t *rowLeft(const std::vector<int16_t> &p) const { return p.data() + profile + 2 * width; }
-    const int16_t *rowRight(const std::vector<int16_t> &p) const {
-        return p.data() + profile + 2 * width + height;
-    }
+    const int16_t *rowRight(const std::vector<int16_t> &p) const { return p.data() + profile + 2 * width + height; }
 };
 
 struct ChartMasks {
@@ -50,8 +48,7 @@ struct ChartPlacement {
 
 // Rasterises every chart at `texelsPerUnit`. Returns false (and leaves `masks` partial) as soon
 // as a mask would be wider or taller than maxSide, which bounds the work for absurd densities.
-bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int padding, int maxSide,
-                         ChartMasks &masks);
+bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int padding, int maxSide, ChartMasks &masks);
 
 // The mask-local texel position of chart point `p` (scaled and offset already) after `quarterTurns`
 // counter-clockwise turns of the width x height mask; integer texels map to integer texels.

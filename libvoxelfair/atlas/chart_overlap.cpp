@@ -8,7 +8,9 @@
 namespace voxelfair {
 namespace {
 
-double orient(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) { return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x); }
+double orient(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
+    return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
 
 bool cross(const ChartBoundaryEdge &e, const ChartBoundaryEdge &f) {
     if (e.va == f.va || e.va == f.vb || e.vb == f.va || e.vb == f.vb)

@@ -16,8 +16,8 @@
 namespace voxelfair {
 
 struct ChartBoundaryEdge {
-    glm::vec2 a, b;       // UV ends
-    uint32_t va, vb;      // their vertices: edges sharing a vertex never count as crossing
+    glm::vec2 a, b;   // UV ends
+    uint32_t va, vb;  // their vertices: edges sharing a vertex never count as crossing
 };
 
 // True when two of the edges cross properly (touching at a point or along a line does not

@@ -66,8 +66,8 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
             continue;
         }
         const glm::dvec3 cross = glm::cross(p1 - p0, p2 - p0);
-        const double longest2 = std::max({glm::dot(p1 - p0, p1 - p0), glm::dot(p2 - p0, p2 - p0),
-                                          glm::dot(p2 - p1, p2 - p1)});
+        const double longest2 =
+            std::max({glm::dot(p1 - p0, p1 - p0), glm::dot(p2 - p0, p2 - p0), glm::dot(p2 - p1, p2 - p1)});
         const double length = glm::length(cross);
         if (!(length > 1e-6 * longest2) || !std::isfinite(length)) {
             degenerate[f] = 1;
@@ -106,7 +106,8 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
     if (adjacency.borderEdges > faceCount) {
         // More border edges than faces: the mesh stores its corners unshared. Match edges by
         // position instead (vertex ids still tell the UV seams apart).
-        const std::vector<uint32_t> welded = weldByPosition(mesh.positions, mesh.vertexCount, mesh.triangles, faceCount);
+        const std::vector<uint32_t> welded =
+            weldByPosition(mesh.positions, mesh.vertexCount, mesh.triangles, faceCount);
         adjacency = buildEdgeAdjacency(welded.data(), faceCount, mesh.vertexCount);
         out.weldedByPosition = true;
     }

@@ -64,14 +64,14 @@ struct AtlasCharts {
     // stages read each chart contiguously.
     std::vector<glm::vec2> wedgeUv;
 
-    size_t degenerateFaces = 0;    // faces given their own tiny chart (includes nonFiniteFaces)
-    size_t nonFiniteFaces = 0;     // faces with a vertex that is not finite
-    size_t ignoredNormals = 0;     // given normals not finite, zero, or outside the face's own cone
-    size_t foldedCharts = 0;       // times a chart winding over itself in UV was cut back
-    size_t separatedFaces = 0;     // thin faces given their own chart for crisp colours (crowded_faces.h)
-    size_t nonManifoldEdges = 0;   // edges of three or more faces, used as chart borders
-    size_t borderEdges = 0;        // edges of one face (open meshes)
-    bool weldedByPosition = false; // corners were unshared: edges were matched by position
+    size_t degenerateFaces = 0;     // faces given their own tiny chart (includes nonFiniteFaces)
+    size_t nonFiniteFaces = 0;      // faces with a vertex that is not finite
+    size_t ignoredNormals = 0;      // given normals not finite, zero, or outside the face's own cone
+    size_t foldedCharts = 0;        // times a chart winding over itself in UV was cut back
+    size_t separatedFaces = 0;      // thin faces given their own chart for crisp colours (crowded_faces.h)
+    size_t nonManifoldEdges = 0;    // edges of three or more faces, used as chart borders
+    size_t borderEdges = 0;         // edges of one face (open meshes)
+    bool weldedByPosition = false;  // corners were unshared: edges were matched by position
 
     size_t chartCount() const { return chartAxis.size(); }
     size_t faceCount() const { return faceChart.size(); }

@@ -42,7 +42,7 @@ struct CrowdedFaceOptions {
 };
 
 struct CrowdedFaces {
-    size_t thinFaces = 0;       // UV inradius under sqrt(2) texels (with a 0.01 texel margin)
+    size_t thinFaces = 0;  // UV inradius under sqrt(2) texels (with a 0.01 texel margin)
     // Thin faces that need their own chart. Over the budget the search stops: then it counts
     // those found until the budget was passed, and thinFaces those seen until then.
     size_t crowdedFaces = 0;

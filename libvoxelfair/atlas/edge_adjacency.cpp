@@ -70,7 +70,8 @@ std::vector<uint32_t> weldByPosition(const glm::vec3 *positions, size_t vertexCo
     };
     std::vector<uint32_t> order(vertexCount);
     std::iota(order.begin(), order.end(), 0u);
-    std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return key(a) < key(b) || (key(a) == key(b) && a < b); });
+    std::sort(order.begin(), order.end(),
+              [&](uint32_t a, uint32_t b) { return key(a) < key(b) || (key(a) == key(b) && a < b); });
     std::vector<uint32_t> canonical(vertexCount);
     for (size_t i = 0; i < vertexCount; ++i)
         canonical[order[i]] = i > 0 && key(order[i]) == key(order[i - 1]) ? canonical[order[i - 1]] : order[i];

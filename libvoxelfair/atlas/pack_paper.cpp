@@ -57,9 +57,9 @@ int packPaper(const ChartMasks &masks, std::vector<ChartPlacement> &placements) 
         Node across{nodes[w1].width + nodes[w2].width, std::max(nodes[w1].height, nodes[w2].height), w1, w2, true};
         Node stacked{std::max(nodes[h1].width, nodes[h2].width), nodes[h1].height + nodes[h2].height, h1, h2, false};
         auto extent = [](const Node &n) { return std::max(n.width, n.height); };
-        const bool stack = extent(stacked) < extent(across) ||
-                           (extent(stacked) == extent(across) &&
-                            stacked.width * stacked.height < across.width * across.height);
+        const bool stack =
+            extent(stacked) < extent(across) ||
+            (extent(stacked) == extent(across) && stacked.width * stacked.height < across.width * across.height);
         const Node merged = stack ? stacked : across;
         alive[size_t(merged.first)] = alive[size_t(merged.second)] = 0;
         nodes.push_back(merged);
@@ -86,7 +86,8 @@ int packPaper(const ChartMasks &masks, std::vector<ChartPlacement> &placements) 
         }
         const Node &first = nodes[size_t(n.first)];
         stack.push_back({n.first, it.x, it.y});
-        stack.push_back({n.second, n.sideBySide ? it.x + first.width : it.x, n.sideBySide ? it.y : it.y + first.height});
+        stack.push_back(
+            {n.second, n.sideBySide ? it.x + first.width : it.x, n.sideBySide ? it.y : it.y + first.height});
     }
     return int(std::min<int64_t>(side, INT32_MAX));
 }

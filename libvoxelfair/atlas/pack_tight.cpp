@@ -59,7 +59,8 @@ public:
 
     FreeRuns(int width, int height)
         : side_(width), height_(height), blocks_((width + kBlock - 1) / kBlock), run_(size_t(width) * height),
-          blockMax_(size_t(height) * blocks_), widest_(size_t(height), int16_t(width)), firstRow_(size_t(width) + 1, 0) {
+          blockMax_(size_t(height) * blocks_), widest_(size_t(height), int16_t(width)),
+          firstRow_(size_t(width) + 1, 0) {
         for (int y = 0; y < height; ++y) {
             for (int x = 0; x < width; ++x)
                 run_[size_t(y) * width + x] = int16_t(width - x);
@@ -169,7 +170,7 @@ bool lowestFit(const FreeRuns &runs, const Shape &shape, int side, int height, i
 }  // namespace
 
 TightPacking packTight(const ChartMasks &masks, int side, int height, bool allowTurns,
-                        std::vector<ChartPlacement> &placements) {
+                       std::vector<ChartPlacement> &placements) {
     TightPacking result;
     const size_t charts = masks.charts.size();
     placements.assign(charts, ChartPlacement{});
@@ -217,7 +218,8 @@ TightPacking packTight(const ChartMasks &masks, int side, int height, bool allow
             int y = std::max(0, runs.firstRow(shape.length(shape.widestFirst[0])) - shape.widestFirst[0]), x = 0;
             std::pair<int, int> *cursor = nullptr;
             if (box) {
-                cursor = &boxCursor.try_emplace(uint32_t(shape.width) << 16 | uint32_t(shape.height), 0, 0).first->second;
+                cursor =
+                    &boxCursor.try_emplace(uint32_t(shape.width) << 16 | uint32_t(shape.height), 0, 0).first->second;
                 if (cursor->first >= y)
                     std::tie(y, x) = *cursor;
             }

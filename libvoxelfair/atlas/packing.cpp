@@ -9,9 +9,7 @@
 
 namespace voxelfair {
 
-const char *toString(PackMode mode) {
-    return mode == PackMode::Paper ? "paper" : "tight";
-}
+const char *toString(PackMode mode) { return mode == PackMode::Paper ? "paper" : "tight"; }
 
 namespace {
 
@@ -203,8 +201,8 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
                 height = side / 2;
             for (out.size = side; out.size <= maxSide; nextShape(wide, out.size, height)) {
                 if (out.size >= longest && height >= longestShort) {
-                    const Fit f = place(packing.masks, options.mode, out.size, height, options.allowRotation,
-                                        packing.placements);
+                    const Fit f =
+                        place(packing.masks, options.mode, out.size, height, options.allowRotation, packing.placements);
                     if (f.fits) {
                         fits = true;
                         filled = f.filled;
@@ -246,8 +244,8 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
             const uint32_t f = charts.chartFaces[i];
             for (int k = 0; k < 3; ++k) {
                 const glm::dvec2 q = glm::dvec2(charts.wedgeUv[3 * size_t(i) + k]) * m.scale + m.offset;
-                out.wedgeUv[3 * f + k] = glm::vec2((turnInMask(q, m.width, m.height, p.quarterTurns) +
-                                                    glm::dvec2(p.x, p.y)) / extent);
+                out.wedgeUv[3 * f + k] =
+                    glm::vec2((turnInMask(q, m.width, m.height, p.quarterTurns) + glm::dvec2(p.x, p.y)) / extent);
             }
         }
     }

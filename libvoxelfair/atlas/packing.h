@@ -75,15 +75,15 @@ struct AtlasLayout {
     // asks otherwise). size is the width, kept from when the layout was always square.
     int size = 0;
     int width = 0, height = 0;
-    double texelsPerUnit = 0;   // the density used, identical for every chart
+    double texelsPerUnit = 0;  // the density used, identical for every chart
     bool densityReduced = false;
-    int gutter = 0;             // as used (even)
+    int gutter = 0;  // as used (even)
     // Three per face, in [0, 1]^2 with v up (OpenGL / OBJ convention): texel (x, y) of the
     // width x height texture covers [x, x+1]/width x [y, y+1]/height.
     std::vector<glm::vec2> wedgeUv;
     std::vector<ChartPlacement> placements;  // per chart, in texels
-    size_t packAttempts = 0;     // packings tried while searching the density
-    size_t nudgedFaces = 0;      // slivers whose float UVs had lost their area, given 1/64 texel back
+    size_t packAttempts = 0;                 // packings tried while searching the density
+    size_t nudgedFaces = 0;                  // slivers whose float UVs had lost their area, given 1/64 texel back
 };
 
 AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options = {});

@@ -24,8 +24,7 @@ inline SeedPlane seedPlane(const glm::dvec3 &n) {
     const double sign = std::copysign(1.0, n.z);
     const double a = -1.0 / (sign + n.z);
     const double b = n.x * n.y * a;
-    return {glm::dvec3(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x),
-            glm::dvec3(b, sign + n.y * n.y * a, -n.y)};
+    return {glm::dvec3(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x), glm::dvec3(b, sign + n.y * n.y * a, -n.y)};
 }
 
 }  // namespace voxelfair

@@ -133,8 +133,7 @@ void rasterConservativeSpans(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double ma
 
 // The same texels one by one: visit(x, y).
 template <class Visit>
-void rasterConservative(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double margin, int width, int height,
-                        Visit &&visit) {
+void rasterConservative(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double margin, int width, int height, Visit &&visit) {
     rasterConservativeSpans(a, b, c, margin, width, height, [&](int y, int xl, int xr) {
         for (int x = xl; x <= xr; ++x)
             visit(x, y);

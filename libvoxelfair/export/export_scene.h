@@ -43,12 +43,14 @@ struct ExportScene {
     bool empty() const { return nodes.empty(); }
     // The node of face part `part`, or -1 when there is none.
     int nodeOfPart(int part) const {
-        if (partNodes.empty()) return part >= 0 && size_t(part) < nodes.size() ? part : -1;
+        if (partNodes.empty())
+            return part >= 0 && size_t(part) < nodes.size() ? part : -1;
         return part >= 0 && size_t(part) < partNodes.size() ? partNodes[size_t(part)] : -1;
     }
     size_t frameCount() const {
         size_t n = 0;
-        for (const ExportNode &node : nodes) n = std::max(n, node.frames.size());
+        for (const ExportNode &node : nodes)
+            n = std::max(n, node.frames.size());
         return n;
     }
 };

@@ -41,15 +41,19 @@ struct CornerKey {
     glm::vec2 uv;
     glm::vec4 colour;
     glm::vec4 tangent;
+    // Bitwise, as the hash: corners weld only when every attribute has the same bit pattern.
+    // NOLINTBEGIN(bugprone-suspicious-memory-comparison)
     bool operator==(const CornerKey &o) const {
         return vertex == o.vertex && std::memcmp(&uv, &o.uv, sizeof uv) == 0 &&
-               std::memcmp(&colour, &o.colour, sizeof colour) == 0 && std::memcmp(&tangent, &o.tangent, sizeof tangent) == 0;
+               std::memcmp(&colour, &o.colour, sizeof colour) == 0 &&
+               std::memcmp(&tangent, &o.tangent, sizeof tangent) == 0;
     }
+    // NOLINTEND(bugprone-suspicious-memory-comparison)
 };
 
-
 void check(bool ok, const std::string &problem) {
-    if (!ok) throw std::invalid_argument("glb writer: " + problem);
+    if (!ok)
+        throw std::invalid_argument("glb writer: " + problem);
 }
 
 // Appends `count` items of `bytes` each to the buffer as a bufferView (4-byte aligned).
@@ -120,7 +124,8 @@ Trs decompose(const glm::mat4 &m) {
     Trs trs;
     glm::vec3 skew;
     glm::vec4 perspective;
-    if (!glm::decompose(m, trs.scale, trs.rotation, trs.translation, skew, perspective)) return Trs{};
+    if (!glm::decompose(m, trs.scale, trs.rotation, trs.translation, skew, perspective))
+        return Trs{};
     trs.rotation = glm::normalize(trs.rotation);
     return trs;
 }
@@ -149,7 +154,8 @@ std::vector<NodeMesh> splitByNode(const GlbMesh &mesh, const std::vector<glm::ma
         const size_t node = mesh.triangleNodes.empty() ? 0 : size_t(mesh.triangleNodes[t]);
         NodeMesh &out = nodes[node];
         std::vector<uint32_t> &heads = first[node];
-        if (heads.empty()) heads.assign(mesh.positions.size(), kNone);
+        if (heads.empty())
+            heads.assign(mesh.positions.size(), kNone);
         for (int c = 0; c < 3; ++c) {
             const size_t corner = 3 * t + size_t(c);
             const CornerKey key{mesh.triangles[corner], hasUv ? mesh.cornerUvs[corner] : glm::vec2(0.0f),
@@ -168,13 +174,16 @@ std::vector<NodeMesh> splitByNode(const GlbMesh &mesh, const std::vector<glm::ma
                 out.positions.push_back(glm::vec3(modelToLocal[node] * glm::vec4(mesh.positions[key.vertex], 1.0f)));
                 if (hasNormal)
                     out.normals.push_back(unitOr(normalToLocal[node] * mesh.normals[key.vertex], glm::vec3(0, 1, 0)));
-                if (hasUv) out.uvs.push_back(glm::vec2(key.uv.x, 1.0f - key.uv.y));
-                if (hasColour) out.colours.push_back(key.colour);
+                if (hasUv)
+                    out.uvs.push_back(glm::vec2(key.uv.x, 1.0f - key.uv.y));
+                if (hasColour)
+                    out.colours.push_back(key.colour);
                 if (hasTangent) {
                     // A surface direction: the frame's linear part; a mirroring frame flips the handedness.
                     const glm::mat3 linear(modelToLocal[node]);
                     const glm::vec3 t = unitOr(linear * glm::vec3(key.tangent), glm::vec3(1, 0, 0));
-                    const float w = (key.tangent.w < 0.0f ? -1.0f : 1.0f) * (glm::determinant(linear) < 0.0f ? -1.0f : 1.0f);
+                    const float w =
+                        (key.tangent.w < 0.0f ? -1.0f : 1.0f) * (glm::determinant(linear) < 0.0f ? -1.0f : 1.0f);
                     out.tangents.emplace_back(t, w);
                 }
             }
@@ -198,7 +207,8 @@ std::vector<glm::vec3> faceWeightedNormals(const GlbMesh &mesh) {
 void checkInput(const GlbMesh &mesh, const ExportScene &scene, size_t nodeCount) {
     check(mesh.triangles.size() % 3 == 0, "the triangle index count is not a multiple of 3");
     const size_t triangles = mesh.triangles.size() / 3;
-    for (uint32_t v : mesh.triangles) check(v < mesh.positions.size(), "a triangle index is past the vertices");
+    for (uint32_t v : mesh.triangles)
+        check(v < mesh.positions.size(), "a triangle index is past the vertices");
     check(mesh.normals.empty() || mesh.normals.size() == mesh.positions.size(), "normals are not one per vertex");
     check(mesh.cornerUvs.empty() || mesh.cornerUvs.size() == 3 * triangles, "UVs are not three per triangle");
     check(mesh.cornerTangents.empty() || mesh.cornerTangents.size() == 3 * triangles,
@@ -207,11 +217,13 @@ void checkInput(const GlbMesh &mesh, const ExportScene &scene, size_t nodeCount)
     check(mesh.cornerColours.empty() || mesh.cornerColours.size() == 3 * triangles,
           "colours are not three per triangle");
     check(mesh.triangleNodes.empty() || mesh.triangleNodes.size() == triangles, "triangle nodes are not one each");
-    for (int n : mesh.triangleNodes) check(n >= 0 && size_t(n) < nodeCount, "a triangle's node does not exist");
+    for (int n : mesh.triangleNodes)
+        check(n >= 0 && size_t(n) < nodeCount, "a triangle's node does not exist");
     const size_t frames = scene.frameCount();
     for (size_t i = 0; i < scene.nodes.size(); ++i) {
         const ExportNode &node = scene.nodes[i];
-        check(node.parent >= -1 && node.parent < int(i), "node " + std::to_string(i) + "'s parent does not come before it");
+        check(node.parent >= -1 && node.parent < int(i),
+              "node " + std::to_string(i) + "'s parent does not come before it");
         check(node.frames.empty() || node.frames.size() == frames, "animated nodes differ in their frame counts");
     }
     check(frames <= 1 || scene.framesPerSecond > 0.0f, "the frame rate must be positive");
@@ -221,7 +233,8 @@ void checkInput(const GlbMesh &mesh, const ExportScene &scene, size_t nodeCount)
 
 glm::mat3 gltfAxes(ModelFront front) {
     // Columns are the images of the model's x, y, z axes in glTF's (X, Y, Z): z -> +Y always.
-    if (front == ModelFront::PlusX) return glm::mat3(glm::vec3(0, 0, 1), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0));
+    if (front == ModelFront::PlusX)
+        return glm::mat3(glm::vec3(0, 0, 1), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0));
     return glm::mat3(glm::vec3(1, 0, 0), glm::vec3(0, 0, -1), glm::vec3(0, 1, 0));  // -y -> +Z
 }
 
@@ -229,7 +242,8 @@ std::vector<uint8_t> writeGlb(const GlbMesh &mesh, const ExportScene &inputScene
                               const GlbOptions &options) {
     check(options.metresPerVoxel > 0.0f && std::isfinite(options.metresPerVoxel), "metres per voxel must be positive");
     ExportScene scene = inputScene;
-    if (scene.nodes.empty()) scene.nodes.push_back(ExportNode{options.name, -1, glm::mat4(1.0f), {}});
+    if (scene.nodes.empty())
+        scene.nodes.push_back(ExportNode{options.name, -1, glm::mat4(1.0f), {}});
     checkInput(mesh, scene, scene.nodes.size());
 
     // C: model frame -> glTF frame; G = C W C^-1 is a node's world transform in glTF.
@@ -317,7 +331,8 @@ std::vector<uint8_t> writeGlb(const GlbMesh &mesh, const ExportScene &inputScene
         const glm::mat4 local =
             node.parent < 0 ? gltfWorld[i] : glm::inverse(gltfWorld[size_t(node.parent)]) * gltfWorld[i];
         const Trs trs = decompose(local);
-        if (trs.translation != glm::vec3(0.0f)) n.translation = toDoubles(&trs.translation.x, 3);
+        if (trs.translation != glm::vec3(0.0f))
+            n.translation = toDoubles(&trs.translation.x, 3);
         if (trs.rotation != glm::quat(1.0f, 0.0f, 0.0f, 0.0f))
             n.rotation = {trs.rotation.x, trs.rotation.y, trs.rotation.z, trs.rotation.w};
         if (glm::any(glm::greaterThan(glm::abs(trs.scale - glm::vec3(1.0f)), glm::vec3(1e-6f))))
@@ -328,8 +343,8 @@ std::vector<uint8_t> writeGlb(const GlbMesh &mesh, const ExportScene &inputScene
             tinygltf::Primitive primitive;
             primitive.mode = TINYGLTF_MODE_TRIANGLES;
             primitive.material = material;
-            primitive.attributes["POSITION"] = bin.floats(&part.positions[0].x, part.positions.size(), 3,
-                                                          TINYGLTF_TYPE_VEC3, kArrayBuffer, true);
+            primitive.attributes["POSITION"] =
+                bin.floats(&part.positions[0].x, part.positions.size(), 3, TINYGLTF_TYPE_VEC3, kArrayBuffer, true);
             if (!part.normals.empty())
                 primitive.attributes["NORMAL"] =
                     bin.floats(&part.normals[0].x, part.normals.size(), 3, TINYGLTF_TYPE_VEC3, kArrayBuffer, false);
@@ -364,14 +379,16 @@ std::vector<uint8_t> writeGlb(const GlbMesh &mesh, const ExportScene &inputScene
         tinygltf::Animation animation;
         animation.name = options.name;
         std::vector<float> times(frames);
-        for (size_t f = 0; f < frames; ++f) times[f] = float(f) / scene.framesPerSecond;
+        for (size_t f = 0; f < frames; ++f)
+            times[f] = float(f) / scene.framesPerSecond;
         const int input = bin.floats(times.data(), frames, 1, TINYGLTF_TYPE_SCALAR, 0, true);
         const auto frameWorld = [&](size_t node, size_t f) {
             const ExportNode &n = scene.nodes[node];
             return toGltf(n.frames.empty() ? n.world : n.frames[f]);
         };
         for (size_t i = 0; i < scene.nodes.size(); ++i) {
-            if (scene.nodes[i].frames.empty()) continue;
+            if (scene.nodes[i].frames.empty())
+                continue;
             std::vector<glm::vec3> translations(frames), scales(frames);
             std::vector<glm::quat> rotations(frames);
             for (size_t f = 0; f < frames; ++f) {
@@ -384,7 +401,8 @@ std::vector<uint8_t> writeGlb(const GlbMesh &mesh, const ExportScene &inputScene
                 rotations[f] = f > 0 && glm::dot(rotations[f - 1], trs.rotation) < 0.0f ? -trs.rotation : trs.rotation;
             }
             std::vector<float> quats;
-            for (const glm::quat &q : rotations) quats.insert(quats.end(), {q.x, q.y, q.z, q.w});
+            for (const glm::quat &q : rotations)
+                quats.insert(quats.end(), {q.x, q.y, q.z, q.w});
             const std::pair<const char *, int> outputs[3] = {
                 {"translation", bin.floats(&translations[0].x, frames, 3, TINYGLTF_TYPE_VEC3, 0, false)},
                 {"rotation", bin.floats(quats.data(), frames, 4, TINYGLTF_TYPE_VEC4, 0, false)},

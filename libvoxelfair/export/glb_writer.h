@@ -53,8 +53,8 @@ struct GlbOptions {
     // 126-voxel MagicaVoxel character 12.6 m tall; engines import it at that size.
     float metresPerVoxel = 0.1f;
     TextureFilter textureFilter = TextureFilter::Nearest;
-    float metallic = 0.0f;   // voxel art is painted, not metal
-    float roughness = 0.9f;  // matte: no plastic shine
+    float metallic = 0.0f;           // voxel art is painted, not metal
+    float roughness = 0.9f;          // matte: no plastic shine
     std::string name = "voxelfair";  // the scene's and the single node's name
     std::string generator = "voxelfair";
     GlbTexture normalMap;  // empty: no normalTexture, no TANGENT
@@ -63,14 +63,13 @@ struct GlbOptions {
 // A triangle mesh in model space; the corner arrays hold 3 entries per triangle.
 struct GlbMesh {
     std::vector<glm::vec3> positions;
-    std::vector<glm::vec3> normals;       // per vertex; empty: area-weighted face normals
-    std::vector<uint32_t> triangles;      // 3 vertex indices per triangle, counter-clockwise
-    std::vector<glm::vec2> cornerUvs;     // empty: no TEXCOORD_0; (0,0) is the image's bottom left
-    std::vector<glm::vec4> cornerColours; // empty: no COLOR_0; linear RGBA in [0, 1]
-    std::vector<glm::vec4> cornerTangents; // empty: no TANGENT; model frame, w = bitangent sign
-    std::vector<int> triangleNodes;       // index into ExportScene::nodes per triangle; empty: node 0
+    std::vector<glm::vec3> normals;         // per vertex; empty: area-weighted face normals
+    std::vector<uint32_t> triangles;        // 3 vertex indices per triangle, counter-clockwise
+    std::vector<glm::vec2> cornerUvs;       // empty: no TEXCOORD_0; (0,0) is the image's bottom left
+    std::vector<glm::vec4> cornerColours;   // empty: no COLOR_0; linear RGBA in [0, 1]
+    std::vector<glm::vec4> cornerTangents;  // empty: no TANGENT; model frame, w = bitangent sign
+    std::vector<int> triangleNodes;         // index into ExportScene::nodes per triangle; empty: node 0
 };
-
 
 // Throws std::invalid_argument for inconsistent input (sizes, indices, node numbers, a node
 // whose parent does not come before it) and std::runtime_error when tinygltf cannot write.

@@ -23,13 +23,15 @@ void addUncovered(int x, int y, const VoxelRun *a, const VoxelRun *aEnd, const V
                   uint8_t direction, FaceSink &sink) {
     for (; a != aEnd; ++a) {
         int z = a->zBegin;
-        while (b != bEnd && b->zEnd <= z) ++b;  // neighbour runs wholly below this one
+        while (b != bEnd && b->zEnd <= z)
+            ++b;  // neighbour runs wholly below this one
         for (const VoxelRun *cover = b; z < a->zEnd; ++cover) {
             if (cover == bEnd || cover->zBegin >= a->zEnd) {
                 sink.add(x, y, *a, z, a->zEnd, direction);
                 break;
             }
-            if (cover->zBegin > z) sink.add(x, y, *a, z, cover->zBegin, direction);
+            if (cover->zBegin > z)
+                sink.add(x, y, *a, z, cover->zBegin, direction);
             z = cover->zEnd;
         }
     }
@@ -49,7 +51,8 @@ void collectBoundaryFaces(const VoxelVolume &solid, std::vector<BoundaryFace> &f
         for (int x = 0; x < solid.sizeX; ++x) {
             const size_t c = solid.columnIndex(x, y);
             const VoxelRun *first = runs + solid.columnFirstRun[c], *last = runs + solid.columnFirstRun[c + 1];
-            if (first == last) continue;
+            if (first == last)
+                continue;
             // Runs never touch inside a column, so both ends of every run are boundary faces.
             for (const VoxelRun *r = first; r != last; ++r) {
                 sink.add(x, y, *r, r->zBegin, r->zBegin + 1, 4);

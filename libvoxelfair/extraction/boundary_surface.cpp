@@ -13,13 +13,15 @@ namespace {
 
 // Bit 0: voxel (x, y, z - 1) is solid; bit 1: voxel (x, y, z) is. One search for both.
 unsigned solidBelowAndAt(const VoxelVolume &v, int x, int y, int z) {
-    if (x < 0 || y < 0 || x >= v.sizeX || y >= v.sizeY) return 0;
+    if (x < 0 || y < 0 || x >= v.sizeX || y >= v.sizeY)
+        return 0;
     const size_t c = v.columnIndex(x, y);
     const VoxelRun *last = v.runs.data() + v.columnFirstRun[c + 1];
     // Runs never touch, so the first run ending at or above z is the only one that can hold either.
-    const VoxelRun *run = std::partition_point(v.runs.data() + v.columnFirstRun[c], last,
-                                               [z](const VoxelRun &r) { return r.zEnd < z; });
-    if (run == last) return 0;
+    const VoxelRun *run =
+        std::partition_point(v.runs.data() + v.columnFirstRun[c], last, [z](const VoxelRun &r) { return r.zEnd < z; });
+    if (run == last)
+        return 0;
     return unsigned(run->zBegin < z) | unsigned(run->zBegin <= z && z < run->zEnd) << 1;
 }
 
@@ -73,7 +75,8 @@ public:
 
     uint32_t vertex(int x, int y, int z, int slot) {
         auto [point, inserted] = points_.insert(LatticePointMap::key(x, y, z));
-        if (inserted) makeVertices(*point, x, y, z);
+        if (inserted)
+            makeVertices(*point, x, y, z);
         const LatticeVertexConfig &config = kLatticeVertexConfigs[point->config];
         const LatticeVertexSheets &sheets = point->joined ? config.joined : config.separate;
         return point->firstVertex + sheets.sheetOfSlot[slot];
@@ -84,16 +87,19 @@ private:
         point.config = latticeConfig(solid_, x, y, z);
         const LatticeVertexConfig &config = kLatticeVertexConfigs[point.config];
         point.joined = false;
-        if (const int h = config.pinchedHalfEdge; h >= 0) {
+        // -1 when no half-edge is pinched, else an index below 12.
+        if (const int h = config.pinchedHalfEdge; h >= 0) {  // NOLINT(bugprone-signed-char-misuse)
             // Join only when the other end is pinched along the same edge too, as it decides alike.
             int q[3] = {x, y, z};
             q[h / 2] += (h & 1) ? 1 : -1;
             point.joined = kLatticeVertexConfigs[latticeConfig(solid_, q[0], q[1], q[2])].pinchedHalfEdge == (h ^ 1);
-            if (point.joined && (h & 1)) ++surface_.stats.pinchedEdgesJoined;
+            if (point.joined && (h & 1))
+                ++surface_.stats.pinchedEdgesJoined;
         }
         const LatticeVertexSheets &sheets = point.joined ? config.joined : config.separate;
         point.firstVertex = uint32_t(surface_.positions.size());
-        for (int i = 0; i < sheets.sheetCount; ++i) surface_.positions.emplace_back(x, y, z);
+        for (int i = 0; i < sheets.sheetCount; ++i)
+            surface_.positions.emplace_back(x, y, z);
         surface_.stats.nonManifoldVerticesSplit += sheets.sheetCount - 1u;
         surface_.stats.nonManifoldEdgesSplit += config.fourQuadEdgesForward;
     }

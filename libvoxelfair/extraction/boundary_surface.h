@@ -20,10 +20,11 @@
 namespace voxelfair {
 
 struct BoundarySurfaceStats {
-    size_t cavityVoxelsFilled = 0;        // empty voxels the exterior cannot reach, counted as solid
-    size_t nonManifoldEdgesSplit = 0;     // lattice edges shared by four quads, given two copies
-    size_t nonManifoldVerticesSplit = 0;  // lattice points whose quads form several fans, given one copy per fan (extra copies counted)
-    size_t pinchedEdgesJoined = 0;        // of those split edges, the ones whose zero-width tunnel was closed (see above)
+    size_t cavityVoxelsFilled = 0;     // empty voxels the exterior cannot reach, counted as solid
+    size_t nonManifoldEdgesSplit = 0;  // lattice edges shared by four quads, given two copies
+    size_t nonManifoldVerticesSplit =
+        0;  // lattice points whose quads form several fans, given one copy per fan (extra copies counted)
+    size_t pinchedEdgesJoined = 0;  // of those split edges, the ones whose zero-width tunnel was closed (see above)
 };
 
 struct BoundarySurface {

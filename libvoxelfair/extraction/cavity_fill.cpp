@@ -12,16 +12,19 @@ namespace {
 class GapSets {
 public:
     explicit GapSets(size_t runs) : parent_(runs + 1) {
-        for (size_t i = 0; i < parent_.size(); ++i) parent_[i] = uint32_t(i);
+        for (size_t i = 0; i < parent_.size(); ++i)
+            parent_[i] = uint32_t(i);
     }
     uint32_t find(uint32_t n) {
-        while (parent_[n] != n) n = parent_[n] = parent_[parent_[n]];  // path halving
+        while (parent_[n] != n)
+            n = parent_[n] = parent_[parent_[n]];  // path halving
         return n;
     }
     void unite(uint32_t a, uint32_t b) {
         a = find(a);
         b = find(b);
-        if (a < b) std::swap(a, b);
+        if (a < b)
+            std::swap(a, b);
         parent_[a] = b;
     }
     bool enclosed(uint32_t n) { return find(n) != 0; }
@@ -50,13 +53,15 @@ ColumnGaps columnGaps(const VoxelVolume &v, size_t column) {
 
 // Unites the gaps of two face-neighbouring columns whose z ranges overlap (merge walk).
 void linkColumns(const ColumnGaps &a, const ColumnGaps &b, GapSets &sets) {
-    if (a.runCount < 2 && b.runCount < 2) return;  // only exterior intervals on both sides
+    if (a.runCount < 2 && b.runCount < 2)
+        return;  // only exterior intervals on both sides
     uint32_t ta = 0, tb = 0;
     while (ta <= a.runCount && tb <= b.runCount) {
         const int endA = a.end(ta), endB = b.end(tb);
         if (std::max(a.begin(ta), b.begin(tb)) < std::min(endA, endB)) {
             const uint32_t na = a.node(ta), nb = b.node(tb);
-            if (na != nb) sets.unite(na, nb);
+            if (na != nb)
+                sets.unite(na, nb);
         }
         if (endA < endB)
             ++ta;
@@ -68,7 +73,8 @@ void linkColumns(const ColumnGaps &a, const ColumnGaps &b, GapSets &sets) {
 }  // namespace
 
 VoxelVolume fillEnclosedCavities(const VoxelVolume &volume, size_t *filled, Voxel fill) {
-    if (filled) *filled = 0;
+    if (filled)
+        *filled = 0;
     const int sx = volume.sizeX, sy = volume.sizeY;
     GapSets sets(volume.runs.size());
     for (int y = 0; y < sy; ++y) {
@@ -76,10 +82,13 @@ VoxelVolume fillEnclosedCavities(const VoxelVolume &volume, size_t *filled, Voxe
             const size_t c = volume.columnIndex(x, y);
             const ColumnGaps gaps = columnGaps(volume, c);
             if (x == 0 || y == 0 || x == sx - 1 || y == sy - 1) {  // beside the padding
-                for (uint32_t t = 1; t < gaps.runCount; ++t) sets.unite(gaps.node(t), 0);
+                for (uint32_t t = 1; t < gaps.runCount; ++t)
+                    sets.unite(gaps.node(t), 0);
             }
-            if (x + 1 < sx) linkColumns(gaps, columnGaps(volume, c + 1), sets);
-            if (y + 1 < sy) linkColumns(gaps, columnGaps(volume, c + size_t(sx)), sets);
+            if (x + 1 < sx)
+                linkColumns(gaps, columnGaps(volume, c + 1), sets);
+            if (y + 1 < sy)
+                linkColumns(gaps, columnGaps(volume, c + size_t(sx)), sets);
         }
     }
 
@@ -88,13 +97,16 @@ VoxelVolume fillEnclosedCavities(const VoxelVolume &volume, size_t *filled, Voxe
     size_t count = 0;
     for (size_t c = 0; c + 1 < volume.columnFirstRun.size(); ++c) {
         for (uint32_t r = volume.columnFirstRun[c]; r + 1 < volume.columnFirstRun[c + 1]; ++r) {
-            if (!sets.enclosed(r + 1)) continue;
+            if (!sets.enclosed(r + 1))
+                continue;
             enclosedAbove[r] = true;
             count += volume.runs[r + 1].zBegin - volume.runs[r].zEnd;
         }
     }
-    if (filled) *filled = count;
-    if (count == 0) return volume;
+    if (filled)
+        *filled = count;
+    if (count == 0)
+        return volume;
 
     VoxelVolume out;
     out.sizeX = volume.sizeX;

@@ -27,7 +27,8 @@ public:
     // The entry for `key` and true when it was just inserted (the caller then fills it). The
     // pointer is valid until the next insertion.
     std::pair<Entry *, bool> insert(uint64_t key) {
-        if (2 * (size_ + 1) > slots_.size()) grow();
+        if (2 * (size_ + 1) > slots_.size())
+            grow();
         size_t i = slotIndex(key);
         while (slots_[i].key != key) {
             if (slots_[i].key == kEmpty) {
@@ -47,7 +48,8 @@ private:
 
     static size_t capacityFor(size_t points) {
         size_t capacity = 16;
-        while (capacity < 2 * points) capacity *= 2;  // load factor at most 1/2
+        while (capacity < 2 * points)
+            capacity *= 2;  // load factor at most 1/2
         return capacity;
     }
 
@@ -55,7 +57,8 @@ private:
         slots_.assign(capacity, Entry{kEmpty, 0, 0, false});
         mask_ = capacity - 1;
         shift_ = 64;
-        for (size_t c = capacity; c > 1; c /= 2) --shift_;
+        for (size_t c = capacity; c > 1; c /= 2)
+            --shift_;
     }
 
     // The lattice column (x, y) is Fibonacci-hashed and z added: a column's points get
@@ -67,12 +70,15 @@ private:
     }
 
     void grow() {
-        std::vector<Entry> old = std::move(slots_);
+        std::vector<Entry> old;
+        old.swap(slots_);
         allocate(old.size() * 2);
         for (const Entry &e : old) {
-            if (e.key == kEmpty) continue;
+            if (e.key == kEmpty)
+                continue;
             size_t i = slotIndex(e.key);
-            while (slots_[i].key != kEmpty) i = (i + 1) & mask_;
+            while (slots_[i].key != kEmpty)
+                i = (i + 1) & mask_;
             slots_[i] = e;
         }
     }

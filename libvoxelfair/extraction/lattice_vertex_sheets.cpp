@@ -29,18 +29,22 @@ constexpr Ring ringAround(int halfEdge) {
     const int side = (halfEdge & 1) << b;
     const int offsets[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
     Ring ring;
-    for (int k = 0; k < 4; ++k) ring.cell[k] = side | offsets[k][0] << u | offsets[k][1] << w;
-    for (int k = 0; k < 4; ++k) ring.face[k] = slotOf(k % 2 == 0 ? u : w, ring.cell[k]);
+    for (int k = 0; k < 4; ++k)
+        ring.cell[k] = side | offsets[k][0] << u | offsets[k][1] << w;
+    for (int k = 0; k < 4; ++k)
+        ring.face[k] = slotOf(k % 2 == 0 ? u : w, ring.cell[k]);
     return ring;
 }
 
 struct SlotSets {
     int parent[kLatticeQuadSlots] = {};
     constexpr SlotSets() {
-        for (int s = 0; s < kLatticeQuadSlots; ++s) parent[s] = s;
+        for (int s = 0; s < kLatticeQuadSlots; ++s)
+            parent[s] = s;
     }
     constexpr int find(int s) const {
-        while (parent[s] != s) s = parent[s];
+        while (parent[s] != s)
+            s = parent[s];
         return s;
     }
     constexpr void unite(int a, int b) { parent[find(a)] = find(b); }
@@ -48,7 +52,8 @@ struct SlotSets {
 
 constexpr int quadsAround(int config, const Ring &ring) {
     int n = 0;
-    for (int k = 0; k < 4; ++k) n += slotHasQuad(config, ring.face[k]);
+    for (int k = 0; k < 4; ++k)
+        n += slotHasQuad(config, ring.face[k]);
     return n;
 }
 
@@ -62,7 +67,8 @@ constexpr SlotSets pairQuads(int config, int joinedHalfEdge) {
         if (n == 2) {
             int present[2] = {}, m = 0;
             for (int k = 0; k < 4; ++k)
-                if (slotHasQuad(config, ring.face[k])) present[m++] = ring.face[k];
+                if (slotHasQuad(config, ring.face[k]))
+                    present[m++] = ring.face[k];
             sets.unite(present[0], present[1]);
         } else if (n == 4) {
             const bool aroundCell0 = solidCell(config, ring.cell[0]) != (h == joinedHalfEdge);
@@ -81,12 +87,15 @@ constexpr SlotSets pairQuads(int config, int joinedHalfEdge) {
 constexpr LatticeVertexSheets numberSheets(int config, const SlotSets &sets) {
     LatticeVertexSheets sheets;
     int sheetOfRoot[kLatticeQuadSlots] = {};
-    for (int s = 0; s < kLatticeQuadSlots; ++s) sheetOfRoot[s] = -1;
+    for (int s = 0; s < kLatticeQuadSlots; ++s)
+        sheetOfRoot[s] = -1;
     for (int s = 0; s < kLatticeQuadSlots; ++s) {
         sheets.sheetOfSlot[s] = kNoSheet;
-        if (!slotHasQuad(config, s)) continue;
+        if (!slotHasQuad(config, s))
+            continue;
         int &sheet = sheetOfRoot[sets.find(s)];
-        if (sheet < 0) sheet = sheets.sheetCount++;
+        if (sheet < 0)
+            sheet = sheets.sheetCount++;
         sheets.sheetOfSlot[s] = uint8_t(sheet);
     }
     return sheets;
@@ -101,13 +110,17 @@ constexpr std::array<LatticeVertexConfig, 256> buildConfigs() {
         entry.joined = entry.separate;
         for (int h = 0; h < 6; ++h) {
             const Ring ring = ringAround(h);
-            if (quadsAround(config, ring) != 4) continue;
-            if (h & 1) ++entry.fourQuadEdgesForward;
+            if (quadsAround(config, ring) != 4)
+                continue;
+            if (h & 1)
+                ++entry.fourQuadEdgesForward;
             // Faces 0 and 2 lie in different pairs; one sheet holding both means the two solid
             // cells are joined around p.
-            if (separate.find(ring.face[0]) != separate.find(ring.face[2])) continue;
+            if (separate.find(ring.face[0]) != separate.find(ring.face[2]))
+                continue;
             // The extraction checks a single half-edge per lattice point.
-            if (entry.pinchedHalfEdge >= 0) throw std::logic_error("two pinched half-edges at one lattice point");
+            if (entry.pinchedHalfEdge >= 0)
+                throw std::logic_error("two pinched half-edges at one lattice point");
             entry.pinchedHalfEdge = int8_t(h);
             entry.joined = numberSheets(config, pairQuads(config, h));
         }

@@ -71,8 +71,7 @@ ConstrainedFairingReport fairConstrained(const MutablePolygonMesh &mesh, const u
     };
     if (options.passes < 0 || options.normalLevels < 0 || options.normalLevels > 8 || options.positionSweeps < 0 ||
         options.stepReach < 1 || options.featureReach < 0 || options.driftRounds < 0 ||
-        !(options.cellHalfWidth > 0.0f) ||
-        !std::isfinite(options.cellHalfWidth) ||
+        !(options.cellHalfWidth > 0.0f) || !std::isfinite(options.cellHalfWidth) ||
         !(options.creaseAngleDegrees > 0.0f && options.creaseAngleDegrees < 180.0f) ||
         !std::isfinite(options.voxelSize) || options.voxelSize < 0.0f)
         throw OptionError("constrained fairing: passes, positionSweeps, driftRounds >= 0, normalLevels in [0, 8], "

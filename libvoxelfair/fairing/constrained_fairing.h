@@ -97,19 +97,19 @@ struct ConstrainedFairingOptions {
 
 struct ConstrainedFairingReport {
     FairingStatus status = FairingStatus::Ok;
-    const char *message = "ok";     // static text saying why when status != Ok
-    float voxelSize = 0.0f;         // the unit of cellHalfWidth used (given or detected)
-    int passes = 0;                 // passes run
-    size_t creaseEdges = 0;         // manifold edges whose polygons meet at more than creaseAngle
-    size_t sharpEdges = 0;          // edges kept sharp: genuine creases, boundary, non-manifold
-    size_t edgeLineVertices = 0;    // vertices on a line of sharp edges (fitted to their planes)
-    size_t pinnedVertices = 0;      // vertices where sharp edges end or meet, or not selected: never moved
-    size_t planeRegions = 0;        // flat faces found (fitPlanes)
-    size_t planeVertices = 0;       // vertices held on their planes, edge lines or corners
-    size_t skippedVertices = 0;     // vertices with non-finite coordinates: never moved, never neighbours
-    size_t movedVertices = 0;       // vertices that ended more than 1e-6 voxel from their input
-    size_t clampedVertices = 0;     // vertices that ended on the wall of their cell
-    float maxDisplacement = 0.0f;   // longest move of a vertex from its input, in position units
+    const char *message = "ok";    // static text saying why when status != Ok
+    float voxelSize = 0.0f;        // the unit of cellHalfWidth used (given or detected)
+    int passes = 0;                // passes run
+    size_t creaseEdges = 0;        // manifold edges whose polygons meet at more than creaseAngle
+    size_t sharpEdges = 0;         // edges kept sharp: genuine creases, boundary, non-manifold
+    size_t edgeLineVertices = 0;   // vertices on a line of sharp edges (fitted to their planes)
+    size_t pinnedVertices = 0;     // vertices where sharp edges end or meet, or not selected: never moved
+    size_t planeRegions = 0;       // flat faces found (fitPlanes)
+    size_t planeVertices = 0;      // vertices held on their planes, edge lines or corners
+    size_t skippedVertices = 0;    // vertices with non-finite coordinates: never moved, never neighbours
+    size_t movedVertices = 0;      // vertices that ended more than 1e-6 voxel from their input
+    size_t clampedVertices = 0;    // vertices that ended on the wall of their cell
+    float maxDisplacement = 0.0f;  // longest move of a vertex from its input, in position units
 };
 
 inline namespace VOXELFAIR_SIMD_VARIANT {  // sse2 or scalar: see simd_variant.h

@@ -42,8 +42,8 @@ FairingPassStats lanczosFairingPass(const glm::vec3 *in, glm::vec3 *out, const C
             continue;
         const glm::vec3 d = sum * (lambda / float(count));
         // Eqs. 9-10, per axis, in voxels.
-        const glm::vec3 move = voxelSize * glm::vec3(lanczosDisplacement(d.x), lanczosDisplacement(d.y),
-                                                     lanczosDisplacement(d.z));
+        const glm::vec3 move =
+            voxelSize * glm::vec3(lanczosDisplacement(d.x), lanczosDisplacement(d.y), lanczosDisplacement(d.z));
         const float move2 = glm::dot(move, move);
         out[v] = p + move;
         maxMove2 = std::max(maxMove2, move2);
@@ -93,7 +93,8 @@ FairingReport fairModifiedLanczos(const MutablePolygonMesh &mesh, const uint8_t 
 
     report.voxelSize = options.voxelSize > 0.0f ? options.voxelSize : detectVoxelSize(mesh);
     if (!(report.voxelSize > 0.0f))
-        return finish(FairingStatus::NothingToDo, "no polygon edge of non-zero finite length to take the voxel size from");
+        return finish(FairingStatus::NothingToDo,
+                      "no polygon edge of non-zero finite length to take the voxel size from");
 
     // The work arrays are kept from call to call (per thread): a filter runs once per click, and
     // fresh multi-megabyte arrays cost more in first-touch page faults than the pass itself.

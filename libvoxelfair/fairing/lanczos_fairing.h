@@ -42,11 +42,11 @@ FairingStatus checkFairingInput(const PolygonMesh &mesh, int passes, const char 
 
 struct FairingReport {
     FairingStatus status = FairingStatus::Ok;
-    const char *message = "ok";  // static text saying why when status != Ok
-    float voxelSize = 0.0f;      // the displacement unit used (given or detected)
-    int passes = 0;              // passes run
-    size_t movedVertices = 0;    // vertices the last pass moved by more than 1e-6 voxel
-    size_t skippedVertices = 0;  // vertices with non-finite coordinates: never moved, never neighbours
+    const char *message = "ok";    // static text saying why when status != Ok
+    float voxelSize = 0.0f;        // the displacement unit used (given or detected)
+    int passes = 0;                // passes run
+    size_t movedVertices = 0;      // vertices the last pass moved by more than 1e-6 voxel
+    size_t skippedVertices = 0;    // vertices with non-finite coordinates: never moved, never neighbours
     float maxDisplacement = 0.0f;  // longest move of one vertex in one pass, in position units
 };
 

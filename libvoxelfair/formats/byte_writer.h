@@ -36,7 +36,8 @@ public:
     // Overwrites 4 bytes at `offset` (for sizes and offsets known only later).
     void patchI32(size_t offset, int32_t v) {
         const uint32_t u = uint32_t(v);
-        for (int i = 0; i < 4; ++i) bytes_[offset + size_t(i)] = uint8_t(u >> (8 * i));
+        for (int i = 0; i < 4; ++i)
+            bytes_[offset + size_t(i)] = uint8_t(u >> (8 * i));
     }
 
 private:

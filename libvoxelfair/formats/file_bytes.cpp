@@ -25,7 +25,8 @@ std::string withReason(const std::string &path, const char *what, int error) {
 std::vector<uint8_t> readFileBytes(const std::string &path, size_t maxBytes) {
     errno = 0;
     std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
-    if (!file) throw FormatError(withReason(path, "cannot open", errno));
+    if (!file)
+        throw FormatError(withReason(path, "cannot open", errno));
 
     // Read in chunks rather than trusting a size query: pipes and devices have none, and the
     // limit must hold whatever the file claims.
@@ -40,9 +41,11 @@ std::vector<uint8_t> readFileBytes(const std::string &path, size_t maxBytes) {
         bytes.resize(used + got);
         if (bytes.size() > maxBytes)
             throw FormatError(path + ": larger than " + std::to_string(maxBytes) + " bytes, not a model file");
-        if (got < want) break;
+        if (got < want)
+            break;
     }
-    if (std::ferror(file.get())) throw FormatError(withReason(path, "cannot read", errno));
+    if (std::ferror(file.get()))
+        throw FormatError(withReason(path, "cannot read", errno));
     return bytes;
 }
 

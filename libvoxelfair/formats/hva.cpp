@@ -20,8 +20,10 @@ HvaAnimation readHva(const uint8_t *data, size_t size) {
     in.require(0, kHeaderBytes, "the 24-byte HVA header");
     const uint32_t frames = in.u32(16, "numFrames");
     const uint32_t sections = in.u32(20, "numSections");
-    if (frames == 0) throw FormatError("HVA declares no frames (numFrames is 0)");
-    if (sections == 0) throw FormatError("HVA declares no sections (numSections is 0)");
+    if (frames == 0)
+        throw FormatError("HVA declares no frames (numFrames is 0)");
+    if (sections == 0)
+        throw FormatError("HVA declares no sections (numSections is 0)");
     // The exact size is checked in steps so that no product can overflow.
     const uint64_t namesEnd = kHeaderBytes + kNameBytes * uint64_t(sections);
     const bool fits = namesEnd <= size && uint64_t(frames) <= (size - namesEnd) / (kMatrixBytes * sections);
@@ -64,9 +66,11 @@ std::vector<uint8_t> writeHva(const HvaAnimation &animation) {
     out.text("", kNameBytes);  // the file-name field the game ignores
     out.u32(uint32_t(animation.frameCount));
     out.u32(uint32_t(sections));
-    for (const std::string &name : animation.sectionNames) out.text(name, kNameBytes);
+    for (const std::string &name : animation.sectionNames)
+        out.text(name, kNameBytes);
     for (const Matrix3x4 &matrix : animation.matrices)
-        for (float v : matrix) out.f32(v);
+        for (float v : matrix)
+            out.f32(v);
     return std::move(out.bytes());
 }
 

@@ -14,7 +14,9 @@ struct HvaAnimation {
     std::vector<Matrix3x4> matrices;  // frame-major, section-fastest: matrices[frame * sections + section]
 
     int sectionCount() const { return int(sectionNames.size()); }
-    const Matrix3x4 &matrix(int frame, int section) const { return matrices[size_t(frame) * sectionNames.size() + size_t(section)]; }
+    const Matrix3x4 &matrix(int frame, int section) const {
+        return matrices[size_t(frame) * sectionNames.size() + size_t(section)];
+    }
 };
 
 // Throws FormatError on a bad size, zero frames or sections, or non-finite matrix entries.

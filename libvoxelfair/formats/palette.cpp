@@ -39,15 +39,18 @@ std::vector<std::string> splitLines(const uint8_t *data, size_t size, size_t max
     for (size_t i = 0; i < size && lines.size() < maxLines; ++i) {
         const char c = char(data[i]);
         if (c == '\n') {
-            if (!line.empty() && line.back() == '\r') line.pop_back();
+            if (!line.empty() && line.back() == '\r')
+                line.pop_back();
             lines.push_back(std::move(line));
             line.clear();
         } else {
             line.push_back(c);
         }
     }
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (!line.empty() && lines.size() < maxLines) lines.push_back(std::move(line));
+    if (!line.empty() && line.back() == '\r')
+        line.pop_back();
+    if (!line.empty() && lines.size() < maxLines)
+        lines.push_back(std::move(line));
     return lines;
 }
 
@@ -61,15 +64,20 @@ bool parseInts(const std::string &line, std::vector<int> &out, int maxValue) {
     out.clear();
     size_t i = 0;
     for (;;) {
-        while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
-        if (i == line.size()) return true;
-        if (line[i] < '0' || line[i] > '9') return false;
+        while (i < line.size() && (line[i] == ' ' || line[i] == '\t'))
+            ++i;
+        if (i == line.size())
+            return true;
+        if (line[i] < '0' || line[i] > '9')
+            return false;
         long value = 0;
         while (i < line.size() && line[i] >= '0' && line[i] <= '9') {
             value = value * 10 + (line[i++] - '0');
-            if (value > maxValue) return false;
+            if (value > maxValue)
+                return false;
         }
-        if (i < line.size() && line[i] != ' ' && line[i] != '\t') return false;
+        if (i < line.size() && line[i] != ' ' && line[i] != '\t')
+            return false;
         out.push_back(int(value));
     }
 }
@@ -108,8 +116,10 @@ Palette readPal(const uint8_t *data, size_t size) {
     static const char kJasc[] = "JASC-PAL";
     const size_t jascLength = sizeof kJasc - 1;
     // Checked before the size: a text palette may happen to be 768 bytes long.
-    if (size >= jascLength && std::memcmp(data, kJasc, jascLength) == 0) return readJascPal(data, size);
-    if (size == kBinaryPaletteBytes) return readBinaryPal(data);
+    if (size >= jascLength && std::memcmp(data, kJasc, jascLength) == 0)
+        return readJascPal(data, size);
+    if (size == kBinaryPaletteBytes)
+        return readBinaryPal(data);
     throw FormatError("not a palette: " + std::to_string(size) +
                       " bytes, expected 768 bytes of 6-bit RGB or a JASC-PAL text file");
 }
@@ -151,7 +161,8 @@ Palette defaultPalette() {
         {255, 250, 215},  // 15 lights (pale yellow)
     };
     Palette palette;
-    for (int r = 0; r < 16; ++r) remapHouseColours(palette, kRampBase[r], 16 * r, 16 * r + 15);
+    for (int r = 0; r < 16; ++r)
+        remapHouseColours(palette, kRampBase[r], 16 * r, 16 * r + 15);
     palette.colours[0] = Rgb{};
     return palette;
 }

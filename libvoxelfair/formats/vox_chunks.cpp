@@ -61,14 +61,16 @@ Chunk readChunk(const ByteReader &data, uint64_t offset, uint64_t end, const std
 
 const std::string *lookup(const Dict &dict, std::string_view key) {
     for (auto it = dict.rbegin(); it != dict.rend(); ++it)
-        if (it->first == key) return &it->second;
+        if (it->first == key)
+            return &it->second;
     return nullptr;
 }
 
 const uint8_t *ContentReader::bytes(uint64_t count, const char *what) {
     if (count > remaining())
         fail(std::string("truncated: ") + what + " at byte " + std::to_string(pos_) + " needs " +
-             std::to_string(count) + " bytes but the chunk's content ends at byte " + std::to_string(chunk_.contentEnd));
+             std::to_string(count) + " bytes but the chunk's content ends at byte " +
+             std::to_string(chunk_.contentEnd));
     const uint8_t *p = data_.bytes(pos_, count, what);
     pos_ += count;
     return p;
@@ -76,10 +78,12 @@ const uint8_t *ContentReader::bytes(uint64_t count, const char *what) {
 
 size_t ContentReader::count(uint64_t itemBytes, const char *what) {
     const int32_t n = i32(what);
-    if (n < 0) fail(std::string(what) + " is negative (" + std::to_string(n) + ")");
+    if (n < 0)
+        fail(std::string(what) + " is negative (" + std::to_string(n) + ")");
     if (uint64_t(n) * itemBytes > remaining())
-        fail(std::string(what) + " " + std::to_string(n) + " needs at least " + std::to_string(uint64_t(n) * itemBytes) +
-             " bytes but only " + std::to_string(remaining()) + " remain in the chunk");
+        fail(std::string(what) + " " + std::to_string(n) + " needs at least " +
+             std::to_string(uint64_t(n) * itemBytes) + " bytes but only " + std::to_string(remaining()) +
+             " remain in the chunk");
     return size_t(n);
 }
 
@@ -124,11 +128,13 @@ glm::vec3 parseTranslation(const std::string &text, const ContentReader &in, con
         rest.remove_prefix(std::min(rest.find_first_not_of(' '), rest.size()));
         const std::string_view token = rest.substr(0, rest.find(' '));
         long long v = 0;
-        if (!parseInt(token, INT32_MIN, INT32_MAX, v)) fail();
+        if (!parseInt(token, INT32_MIN, INT32_MAX, v))
+            fail();
         t[axis] = float(v);
         rest.remove_prefix(token.size());
     }
-    if (rest.find_first_not_of(' ') != std::string_view::npos) fail();
+    if (rest.find_first_not_of(' ') != std::string_view::npos)
+        fail();
     return t;
 }
 

@@ -38,7 +38,8 @@ public:
 
     VoxFile parse(const Chunk &main) {
         file_.palette = voxDefaultPalette();
-        for (size_t c = 1; c < 256; ++c) file_.alpha[c] = uint8_t(vox::kDefaultPalette[c] >> 24);
+        for (size_t c = 1; c < 256; ++c)
+            file_.alpha[c] = uint8_t(vox::kDefaultPalette[c] >> 24);
         file_.defaultPalette = true;
 
         for (uint64_t offset = main.contentEnd; offset < main.childrenEnd;) {
@@ -65,16 +66,26 @@ private:
     void dispatch(const Chunk &chunk) {
         ContentReader in(data_, chunk);
         const std::string &id = chunk.id;
-        if (id == "SIZE") return readSize(chunk, in);
-        if (id == "XYZI") return readVoxels(in);
-        if (id == "TDCZ") return readCompressedVoxels(in);
-        if (pending_ && pending_->strayChunk.empty()) pending_->strayChunk = id;
-        if (id == "RGBA") return readPalette(in);
-        if (id == "nTRN") return readTransform(chunk, in);
-        if (id == "nGRP") return readGroup(chunk, in);
-        if (id == "nSHP") return readShape(chunk, in);
-        if (id == "LAYR") return readLayer(in);
-        if (id == "PACK") file_.packed = true;  // its model count is implied by the SIZE/XYZI pairs
+        if (id == "SIZE")
+            return readSize(chunk, in);
+        if (id == "XYZI")
+            return readVoxels(in);
+        if (id == "TDCZ")
+            return readCompressedVoxels(in);
+        if (pending_ && pending_->strayChunk.empty())
+            pending_->strayChunk = id;
+        if (id == "RGBA")
+            return readPalette(in);
+        if (id == "nTRN")
+            return readTransform(chunk, in);
+        if (id == "nGRP")
+            return readGroup(chunk, in);
+        if (id == "nSHP")
+            return readShape(chunk, in);
+        if (id == "LAYR")
+            return readLayer(in);
+        if (id == "PACK")
+            file_.packed = true;  // its model count is implied by the SIZE/XYZI pairs
         // Anything else (MATL, MATT, rOBJ, rCAM, NOTE, IMAP, unknown ids) is skipped by its size.
     }
 
@@ -82,7 +93,8 @@ private:
         closeModel(&chunk);
         PendingSize pending;
         pending.chunk = chunk;
-        for (int &side : pending.size) side = in.i32("model size");
+        for (int &side : pending.size)
+            side = in.i32("model size");
         const int *s = pending.size;
         const auto sizeText = [&] {
             return std::to_string(s[0]) + " x " + std::to_string(s[1]) + " x " + std::to_string(s[2]);
@@ -104,7 +116,8 @@ private:
     // Errors unless the previous SIZE got its XYZI. `next` is the chunk that ends the wait (null
     // at the end of MAIN).
     void closeModel(const Chunk *next) {
-        if (!pending_) return;
+        if (!pending_)
+            return;
         std::string problem = "model " + std::to_string(file_.models.size()) + ": " + pending_->chunk.where() +
                               " has no XYZI (or TDCZ) chunk after it";
         if (!pending_->strayChunk.empty())
@@ -119,7 +132,8 @@ private:
     // ends with the voxel's position in the list.
     void readVoxels(ContentReader &in) {
         const std::string model = "model " + std::to_string(file_.models.size());
-        if (!pending_) in.fail(model + ": an XYZI chunk without a SIZE chunk before it");
+        if (!pending_)
+            in.fail(model + ": an XYZI chunk without a SIZE chunk before it");
         const int sx = pending_->size[0], sy = pending_->size[1], sz = pending_->size[2];
         const size_t count = in.count(4, "voxel count");
         const uint8_t *voxels = in.bytes(4 * uint64_t(count), "voxels");
@@ -134,13 +148,16 @@ private:
             const uint64_t column = uint64_t(v[1]) * uint64_t(sx) + v[0];  // < 2^22, z < 2^8, i < 2^32
             keys[i] = column << 40 | uint64_t(v[2]) << 32 | i;
         }
-        if (!std::is_sorted(keys.begin(), keys.end())) std::sort(keys.begin(), keys.end());
+        if (!std::is_sorted(keys.begin(), keys.end()))
+            std::sort(keys.begin(), keys.end());
 
         VoxelVolumeBuilder builder(sx, sy, sz);
         for (size_t k = 0; k < count; ++k) {
-            if (k + 1 < count && keys[k + 1] >> 32 == keys[k] >> 32) continue;  // a later voxel replaces it
+            if (k + 1 < count && keys[k + 1] >> 32 == keys[k] >> 32)
+                continue;  // a later voxel replaces it
             const uint8_t *v = voxels + 4 * (keys[k] & 0xffffffffu);
-            if (v[3] == 0) continue;                        // colour index 0 is empty
+            if (v[3] == 0)
+                continue;                                   // colour index 0 is empty
             builder.add(v[0], v[1], v[2], Voxel{v[3], 0});  // in order by construction
         }
         file_.models.push_back(builder.finish());
@@ -150,7 +167,8 @@ private:
     // Teardown's TDCZ in place of an XYZI: a zlib stream of the dense volume (vox_tdcz.h).
     void readCompressedVoxels(ContentReader &in) {
         const std::string model = "model " + std::to_string(file_.models.size());
-        if (!pending_) in.fail(model + ": a TDCZ chunk without a SIZE chunk before it");
+        if (!pending_)
+            in.fail(model + ": a TDCZ chunk without a SIZE chunk before it");
         file_.models.push_back(vox::readTdcz(in, pending_->size, model));
         pending_.reset();
     }
@@ -184,7 +202,8 @@ private:
     void readTransform(const Chunk &chunk, ContentReader &in) {
         Dict attributes;
         VoxNode &node = beginNode(VoxNodeKind::Transform, chunk, in, attributes);
-        if (const std::string *name = lookup(attributes, "_name")) node.name = *name;
+        if (const std::string *name = lookup(attributes, "_name"))
+            node.name = *name;
         childIds_.back().push_back(in.i32("child node id"));
         in.i32("reserved id");
         node.layer = in.i32("layer id");
@@ -197,7 +216,8 @@ private:
             const std::string where = "node " + std::to_string(node.id) + " frame " + std::to_string(f);
             VoxTransformKey key;
             key.frame = vox::parseFrame(dict, in, where);
-            if (const std::string *r = lookup(dict, "_r")) key.transform = vox::parseRotation(*r, in, where);
+            if (const std::string *r = lookup(dict, "_r"))
+                key.transform = vox::parseRotation(*r, in, where);
             if (const std::string *t = lookup(dict, "_t"))
                 key.transform[3] = glm::vec4(vox::parseTranslation(*t, in, where), 1.0f);
             node.transformKeys.push_back(key);
@@ -212,7 +232,8 @@ private:
         const size_t children = in.count(4, "child count");
         std::vector<int> &ids = childIds_.back();
         ids.reserve(children);
-        for (size_t c = 0; c < children; ++c) ids.push_back(in.i32("child node id"));
+        for (size_t c = 0; c < children; ++c)
+            ids.push_back(in.i32("child node id"));
     }
 
     void readShape(const Chunk &chunk, ContentReader &in) {
@@ -226,7 +247,7 @@ private:
             VoxShapeKey key;
             key.model = in.i32("model id");
             key.frame = vox::parseFrame(in.dict("model attribute count"), in,
-                                   "node " + std::to_string(node.id) + " model entry " + std::to_string(m));
+                                        "node " + std::to_string(node.id) + " model entry " + std::to_string(m));
             node.shapeKeys.push_back(key);  // model ids are checked once every model is read
         }
         std::stable_sort(node.shapeKeys.begin(), node.shapeKeys.end(),
@@ -237,7 +258,8 @@ private:
         VoxLayer layer;
         layer.id = in.i32("layer id");
         const Dict attributes = in.dict("layer attribute count");
-        if (const std::string *name = lookup(attributes, "_name")) layer.name = *name;
+        if (const std::string *name = lookup(attributes, "_name"))
+            layer.name = *name;
         layer.hidden = vox::isHidden(attributes);
         file_.layers.push_back(std::move(layer));
     }
@@ -267,7 +289,8 @@ VoxFile readVox(const uint8_t *data, size_t size) {
         throw FormatError("unsupported version " + std::to_string(version) + " (known: 150 and 200)");
 
     const Chunk main = readChunk(bytes, 8, size, "the file");
-    if (main.id != "MAIN") throw FormatError(main.where() + ": the first chunk must be 'MAIN'");
+    if (main.id != "MAIN")
+        throw FormatError(main.where() + ": the first chunk must be 'MAIN'");
     VoxFile file = VoxParser(bytes).parse(main);  // bytes after MAIN are ignored
     file.version = version;
     return file;

@@ -23,7 +23,8 @@ public:
             if (!indexOf.emplace(file_.nodes[i].id, int(i)).second)
                 throw FormatError(nodeLabel(i) + ": node id " + std::to_string(file_.nodes[i].id) + " is used twice");
         const auto root = indexOf.find(0);
-        if (root == indexOf.end()) throw FormatError("the scene graph has no root (no node with id 0)");
+        if (root == indexOf.end())
+            throw FormatError("the scene graph has no root (no node with id 0)");
         file_.root = root->second;
 
         for (size_t i = 0; i < file_.nodes.size(); ++i) {
@@ -48,7 +49,8 @@ public:
         enum : uint8_t { kUnvisited, kOnPath, kDone };
         const size_t n = file_.nodes.size();
         size_t heldVoxels = 0;
-        for (const VoxelVolume &model : file_.models) heldVoxels += model.voxelCount();
+        for (const VoxelVolume &model : file_.models)
+            heldVoxels += model.voxelCount();
         const size_t maxShown = std::max(kMaxVoxShownVoxels, heldVoxels);
         std::vector<uint8_t> state(n, kUnvisited);
         std::vector<size_t> height(n, 0), instances(n, 0), shown(n, 0);
@@ -108,18 +110,22 @@ private:
 
 void resolveSceneGraph(VoxFile &file, const std::vector<std::vector<int>> &childIds,
                        const std::vector<Chunk> &nodeChunks) {
-    if (file.nodes.empty()) return;
+    if (file.nodes.empty())
+        return;
     GraphChecks checks(file, nodeChunks);
     checks.resolve(childIds);
     checks.checkShape();
 }
 
 int countFrames(const VoxFile &file) {
-    if (file.nodes.empty()) return file.packed ? int(file.models.size()) : 1;
+    if (file.nodes.empty())
+        return file.packed ? int(file.models.size()) : 1;
     int last = 0;
     for (const VoxNode &node : file.nodes) {
-        for (const VoxTransformKey &key : node.transformKeys) last = std::max(last, key.frame);
-        for (const VoxShapeKey &key : node.shapeKeys) last = std::max(last, key.frame);
+        for (const VoxTransformKey &key : node.transformKeys)
+            last = std::max(last, key.frame);
+        for (const VoxShapeKey &key : node.shapeKeys)
+            last = std::max(last, key.frame);
     }
     return last + 1;
 }

@@ -14,7 +14,8 @@ namespace {
 void inflateInto(const uint8_t *in, uint64_t inBytes, std::vector<uint8_t> &out, const ContentReader &reader,
                  const std::string &model) {
     z_stream stream{};
-    if (inflateInit(&stream) != Z_OK) reader.fail(model + ": zlib could not start inflating");
+    if (inflateInit(&stream) != Z_OK)
+        reader.fail(model + ": zlib could not start inflating");
     struct End {
         z_stream &s;
         ~End() { inflateEnd(&s); }
@@ -36,7 +37,8 @@ void inflateInto(const uint8_t *in, uint64_t inBytes, std::vector<uint8_t> &out,
             reader.fail(model + ": corrupt zlib data in the compressed voxels after " + std::to_string(outDone) +
                         " of " + std::to_string(out.size()) + " bytes (" +
                         (stream.msg != nullptr ? stream.msg : "zlib error " + std::to_string(result)) + ")");
-        if (outDone == out.size()) break;
+        if (outDone == out.size())
+            break;
         const bool stuck = stream.avail_in == inChunk && stream.avail_out == outChunk;  // no progress
         if (result == Z_STREAM_END || stuck)
             reader.fail(model + ": the compressed voxels end after " + std::to_string(outDone) + " of the " +
@@ -48,11 +50,12 @@ void inflateInto(const uint8_t *in, uint64_t inBytes, std::vector<uint8_t> &out,
 
 VoxelVolume readTdcz(ContentReader &in, const int (&size)[3], const std::string &model) {
     int sides[3];
-    for (int &side : sides) side = in.i32("TDCZ model size");
+    for (int &side : sides)
+        side = in.i32("TDCZ model size");
     if (sides[0] != size[0] || sides[1] != size[1] || sides[2] != size[2])
-        in.fail(model + ": the compressed voxels' size " + std::to_string(sides[0]) + " x " +
-                std::to_string(sides[1]) + " x " + std::to_string(sides[2]) + " differs from the SIZE chunk's " +
-                std::to_string(size[0]) + " x " + std::to_string(size[1]) + " x " + std::to_string(size[2]));
+        in.fail(model + ": the compressed voxels' size " + std::to_string(sides[0]) + " x " + std::to_string(sides[1]) +
+                " x " + std::to_string(sides[2]) + " differs from the SIZE chunk's " + std::to_string(size[0]) + " x " +
+                std::to_string(size[1]) + " x " + std::to_string(size[2]));
     const uint64_t sx = uint64_t(size[0]), sy = uint64_t(size[1]), sz = uint64_t(size[2]);
     const uint64_t voxels = sx * sy * sz;
     const uint64_t compressed = in.remaining();
@@ -72,7 +75,8 @@ VoxelVolume readTdcz(ContentReader &in, const int (&size)[3], const std::string 
         for (uint64_t x = 0; x < sx; ++x)
             for (uint64_t z = 0; z < sz; ++z) {
                 const uint8_t colour = dense[x + sx * (y + sy * z)];
-                if (colour != 0) builder.add(int(x), int(y), int(z), Voxel{colour, 0});  // in order by construction
+                if (colour != 0)
+                    builder.add(int(x), int(y), int(z), Voxel{colour, 0});  // in order by construction
             }
     return builder.finish();
 }

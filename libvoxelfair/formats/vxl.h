@@ -27,7 +27,7 @@ constexpr int kRedAlert2NormalCount = 244;
 struct VxlSection {
     std::string name;
     VoxelVolume volume;
-    float scale = 1.0f / 12.0f;  // "Det": scales HVA translations; 0 in a file is read as 1 (the editor's rule)
+    float scale = 1.0f / 12.0f;          // "Det": scales HVA translations; 0 in a file is read as 1 (the editor's rule)
     Matrix3x4 transform = kIdentity3x4;  // the tailer matrix (translation already scaled)
     glm::vec3 minBounds{0.0f};
     glm::vec3 maxBounds{0.0f};

@@ -9,7 +9,8 @@ glm::vec3 VxlSection::voxelScale() const {
     glm::vec3 scale(1.0f);
     for (int a = 0; a < 3; ++a) {
         const float s = size[a] > 0 ? (maxBounds[a] - minBounds[a]) / float(size[a]) : 0.0f;
-        if (std::isfinite(s) && s > 0.0f) scale[a] = s;
+        if (std::isfinite(s) && s > 0.0f)
+            scale[a] = s;
     }
     return scale;
 }
@@ -39,7 +40,8 @@ glm::mat4 sectionPivotToModel(const VxlSection &section, const Matrix3x4 *hvaMat
     const float translationScale = hvaMatrix ? section.scale : 1.0f;
     glm::mat4 result(1.0f);
     for (int row = 0; row < 3; ++row) {
-        for (int col = 0; col < 3; ++col) result[col][row] = m[size_t(row) * 4 + size_t(col)];
+        for (int col = 0; col < 3; ++col)
+            result[col][row] = m[size_t(row) * 4 + size_t(col)];
         result[3][row] = m[size_t(row) * 4 + 3] * translationScale;
     }
     return result;

@@ -55,9 +55,7 @@ void checkMagic(const uint8_t *data, size_t size) {
 class ColumnReader {
 public:
     ColumnReader(const std::string &where, int sizeX, int sizeY, int sizeZ, uint8_t normalType, DecodeBudget &budget)
-        : where_(where),
-          budget_(budget),
-          sizeZ_(sizeZ),
+        : where_(where), budget_(budget), sizeZ_(sizeZ),
           maxNormal_(normalType == uint8_t(VxlNormalType::TiberianSun) ? kTiberianSunNormalCount - 1
                                                                        : kRedAlert2NormalCount - 1),
           builder_(sizeX, sizeY, sizeZ) {}
@@ -65,12 +63,15 @@ public:
     // Column (x, y) with the given span offsets, relative to the span data at `dataBegin`; the
     // column's bytes must lie before `bodyEnd`.
     void read(const ByteReader &in, int x, int y, int32_t start, int32_t end, uint64_t dataBegin, uint64_t bodyEnd) {
-        if (start == kEmptyColumn && end == kEmptyColumn) return;
+        if (start == kEmptyColumn && end == kEmptyColumn)
+            return;
         const auto spans = [&] { return "spanStart " + std::to_string(start) + ", spanEnd " + std::to_string(end); };
         if (start == kEmptyColumn || end == kEmptyColumn)
             throw error(x, y, spans() + ": an empty column has both equal to -1");
-        if (start < 0 || end < 0) throw error(x, y, spans() + ": negative span offset");
-        if (end < start) throw error(x, y, spans() + ": spanEnd before spanStart");
+        if (start < 0 || end < 0)
+            throw error(x, y, spans() + ": negative span offset");
+        if (end < start)
+            throw error(x, y, spans() + ": spanEnd before spanStart");
         // spanEnd is the column's last byte (inclusive).
         const uint64_t first = dataBegin + uint64_t(start);
         const uint64_t limit = dataBegin + uint64_t(end) + 1;
@@ -87,7 +88,8 @@ public:
         int z = 0;
         while (z < sizeZ_) {
             const auto at = [&] { return " at byte offset " + std::to_string(first + pos); };
-            if (length - pos < 2) throw error(x, y, "segment" + at() + " runs past spanEnd (" + spans() + ")");
+            if (length - pos < 2)
+                throw error(x, y, "segment" + at() + " runs past spanEnd (" + spans() + ")");
             const int skip = column[pos];
             const int count = column[pos + 1];
             if (z + skip + count > sizeZ_)
@@ -96,9 +98,9 @@ public:
                                 " from z = " + std::to_string(z) + at() + " runs past the column height " +
                                 std::to_string(sizeZ_));
             if (length - pos < 3 + 2 * size_t(count))
-                throw error(
-                    x, y,
-                    "run of " + std::to_string(count) + " voxels" + at() + " runs past spanEnd (" + spans() + ")");
+                throw error(x, y,
+                            "run of " + std::to_string(count) + " voxels" + at() + " runs past spanEnd (" + spans() +
+                                ")");
             const uint8_t repeated = column[pos + 2 + 2 * size_t(count)];
             if (repeated != count)
                 throw error(x, y,
@@ -185,7 +187,8 @@ VxlModel readVxl(const uint8_t *data, size_t size) {
     const uint32_t sectionCount = in.u32(20, "numSections");
     const uint32_t tailerCount = in.u32(24, "numTailers");
     const uint32_t bodySize = in.u32(28, "bodySize");
-    if (sectionCount == 0) throw FormatError("the header declares no sections (numSections is 0)");
+    if (sectionCount == 0)
+        throw FormatError("the header declares no sections (numSections is 0)");
     if (tailerCount != sectionCount)
         throw FormatError("numTailers " + std::to_string(tailerCount) + " differs from numSections " +
                           std::to_string(sectionCount));
@@ -224,7 +227,8 @@ VxlModel readVxl(const uint8_t *data, size_t size) {
         layout.endOfs = in.i32(t + 4, "spanEndOfs");
         layout.dataOfs = in.i32(t + 8, "spanDataOfs");
         section.scale = finiteFloat(in, t + 12, where, "scale");
-        if (section.scale == 0.0f) section.scale = 1.0f;  // the editor's rule
+        if (section.scale == 0.0f)
+            section.scale = 1.0f;  // the editor's rule
         for (size_t k = 0; k < 12; ++k)
             section.transform[k] = finiteFloat(in, t + 16 + 4 * k, where, "transform entry");
         for (int a = 0; a < 3; ++a) {

@@ -67,8 +67,10 @@ std::array<int32_t, 3> writeSectionBody(const VoxelVolume &volume, ByteWriter &b
 }  // namespace
 
 std::vector<uint8_t> writeVxl(const VxlModel &model) {
-    if (model.sections.empty()) throw FormatError("cannot write VXL: the model has no sections");
-    for (size_t s = 0; s < model.sections.size(); ++s) checkWritable(model.sections[s], s);
+    if (model.sections.empty())
+        throw FormatError("cannot write VXL: the model has no sections");
+    for (size_t s = 0; s < model.sections.size(); ++s)
+        checkWritable(model.sections[s], s);
 
     ByteWriter body;
     std::vector<std::array<int32_t, 3>> offsets;
@@ -103,11 +105,15 @@ std::vector<uint8_t> writeVxl(const VxlModel &model) {
     out.bytes().insert(out.bytes().end(), body.bytes().begin(), body.bytes().end());
     for (uint32_t s = 0; s < sectionCount; ++s) {
         const VxlSection &section = model.sections[s];
-        for (int32_t ofs : offsets[s]) out.i32(ofs);
+        for (int32_t ofs : offsets[s])
+            out.i32(ofs);
         out.f32(section.scale);
-        for (float v : section.transform) out.f32(v);
-        for (int a = 0; a < 3; ++a) out.f32(section.minBounds[a]);
-        for (int a = 0; a < 3; ++a) out.f32(section.maxBounds[a]);
+        for (float v : section.transform)
+            out.f32(v);
+        for (int a = 0; a < 3; ++a)
+            out.f32(section.minBounds[a]);
+        for (int a = 0; a < 3; ++a)
+            out.f32(section.maxBounds[a]);
         out.u8(uint8_t(section.volume.sizeX));
         out.u8(uint8_t(section.volume.sizeY));
         out.u8(uint8_t(section.volume.sizeZ));

@@ -66,14 +66,18 @@ struct Builder {
     std::vector<int> weld() const {
         struct Key {
             float v[8];
-            bool operator==(const Key &o) const { return std::memcmp(v, o.v, sizeof v) == 0; }
+            // Bitwise, as the hash: the reference welds identical bit patterns only.
+            bool operator==(const Key &o) const {
+                return std::memcmp(v, o.v, sizeof v) == 0;  // NOLINT(bugprone-suspicious-memory-comparison)
+            }
         };
         struct Hash {
             size_t operator()(const Key &k) const {
                 uint32_t bits[8];
                 std::memcpy(bits, k.v, sizeof bits);
                 uint64_t h = 1469598103934665603ull;
-                for (uint32_t b : bits) h = (h ^ b) * 1099511628211ull;
+                for (uint32_t b : bits)
+                    h = (h ^ b) * 1099511628211ull;
                 return size_t(h);
             }
         };
@@ -86,7 +90,8 @@ struct Builder {
             const glm::vec2 t = in.uvs[c];
             Key key{{p.x, p.y, p.z, n.x, n.y, n.z, t.x, t.y}};
             for (float &f : key.v)
-                if (f == 0.0f) f = 0.0f;  // -0 and +0 compare equal in the reference
+                if (f == 0.0f)
+                    f = 0.0f;  // -0 and +0 compare equal in the reference
             welded[c] = first.emplace(key, int(c)).first->second;
         }
         return welded;
@@ -97,7 +102,8 @@ struct Builder {
         std::vector<Triangle> degenerate;
         for (size_t t = 0; t < in.triangleCount; ++t) {
             Triangle tri;
-            for (int k = 0; k < 3; ++k) tri.corner[k] = welded[3 * t + size_t(k)];
+            for (int k = 0; k < 3; ++k)
+                tri.corner[k] = welded[3 * t + size_t(k)];
             tri.original = int(t);
             const V3 p0 = position(tri.corner[0]), p1 = position(tri.corner[1]), p2 = position(tri.corner[2]);
             if (p0 == p1 || p0 == p2 || p1 == p2) {
@@ -120,14 +126,18 @@ struct Builder {
             const float signedArea = t21x * t31y - t21y * t31x;
             const V3 os = t31y * d1 - t21y * d2;   // thesis eq. 18
             const V3 ot = -t31x * d1 + t21x * d2;  // thesis eq. 19
-            if (signedArea > 0) tri.flags |= OrientPreserving;
+            if (signedArea > 0)
+                tri.flags |= OrientPreserving;
             if (notZero(signedArea)) {
                 const float absArea = std::fabs(signedArea);
                 const float lenOs = vlength(os), lenOt = vlength(ot);
                 const float s = (tri.flags & OrientPreserving) ? 1.0f : -1.0f;
-                if (notZero(lenOs)) tri.os = (s / lenOs) * os;
-                if (notZero(lenOt)) tri.ot = (s / lenOt) * ot;
-                if (notZero(lenOs / absArea) && notZero(lenOt / absArea)) tri.flags &= uint8_t(~GroupWithAny);
+                if (notZero(lenOs))
+                    tri.os = (s / lenOs) * os;
+                if (notZero(lenOt))
+                    tri.ot = (s / lenOt) * ot;
+                if (notZero(lenOs / absArea) && notZero(lenOt / absArea))
+                    tri.flags &= uint8_t(~GroupWithAny);
             }
         }
         buildNeighbours();
@@ -166,7 +176,8 @@ struct Builder {
             const Edge &e = edges[i];
             bool forwardA;
             const int edgeA = edgeOf(e.f, e.i0, e.i1, forwardA);
-            if (edgeA < 0 || tris[size_t(e.f)].neighbour[edgeA] != -1) continue;
+            if (edgeA < 0 || tris[size_t(e.f)].neighbour[edgeA] != -1)
+                continue;
             for (size_t j = i + 1; j < edges.size() && edges[j].i0 == e.i0 && edges[j].i1 == e.i1; ++j) {
                 bool forwardB;
                 const int edgeB = edgeOf(edges[j].f, e.i0, e.i1, forwardB);
@@ -181,25 +192,31 @@ struct Builder {
 
     static int cornerOf(const Triangle &tri, int vertex) {
         for (int i = 0; i < 3; ++i)
-            if (tri.corner[i] == vertex) return i;
+            if (tri.corner[i] == vertex)
+                return i;
         return -1;
     }
 
     void assign(int f, int g) {
         Triangle &tri = tris[size_t(f)];
         const int i = cornerOf(tri, groups[size_t(g)].vertex);
-        if (i < 0 || tri.group[i] != -1) return;
+        if (i < 0 || tri.group[i] != -1)
+            return;
         if ((tri.flags & GroupWithAny) && tri.group[0] == -1 && tri.group[1] == -1 && tri.group[2] == -1) {
             tri.flags &= uint8_t(~OrientPreserving);  // the first group to reach it decides
-            if (groups[size_t(g)].orientPreserving) tri.flags |= OrientPreserving;
+            if (groups[size_t(g)].orientPreserving)
+                tri.flags |= OrientPreserving;
         }
-        if (bool(tri.flags & OrientPreserving) != groups[size_t(g)].orientPreserving) return;
+        if (bool(tri.flags & OrientPreserving) != groups[size_t(g)].orientPreserving)
+            return;
         groupFaces.push_back(f);
         ++groups[size_t(g)].count;
         tri.group[i] = g;
         const int left = tri.neighbour[i], right = tri.neighbour[i > 0 ? i - 1 : 2];
-        if (left >= 0) assign(left, g);
-        if (right >= 0) assign(right, g);
+        if (left >= 0)
+            assign(left, g);
+        if (right >= 0)
+            assign(right, g);
     }
 
     void buildGroups() {
@@ -207,14 +224,17 @@ struct Builder {
         for (size_t f = 0; f < healthy; ++f)
             for (int i = 0; i < 3; ++i) {
                 Triangle &tri = tris[f];
-                if ((tri.flags & GroupWithAny) || tri.group[i] != -1) continue;
+                if ((tri.flags & GroupWithAny) || tri.group[i] != -1)
+                    continue;
                 const int g = int(groups.size());
                 groups.push_back({tri.corner[i], bool(tri.flags & OrientPreserving), groupFaces.size(), 1});
                 groupFaces.push_back(int(f));
                 tri.group[i] = g;
                 const int left = tri.neighbour[i], right = tri.neighbour[i > 0 ? i - 1 : 2];
-                if (left >= 0) assign(left, g);
-                if (right >= 0) assign(right, g);
+                if (left >= 0)
+                    assign(left, g);
+                if (right >= 0)
+                    assign(right, g);
             }
     }
 
@@ -223,7 +243,8 @@ struct Builder {
         V3 os(0.0f);
         for (int f : members) {
             const Triangle &tri = tris[size_t(f)];
-            if (tri.flags & GroupWithAny) continue;
+            if (tri.flags & GroupWithAny)
+                continue;
             const int i = cornerOf(tri, vertex);
             const V3 n = normal(tri.corner[i]);
             const V3 tangent = projectNormalised(n, tri.os);
@@ -257,22 +278,27 @@ struct Builder {
                 const int f = groupFaces[group.first + k];
                 const Triangle &tri = tris[size_t(f)];
                 int index = 0;
-                while (index < 3 && tri.group[index] != int(g)) ++index;
+                while (index < 3 && tri.group[index] != int(g))
+                    ++index;
                 members.clear();
                 for (size_t j = 0; j < group.count; ++j) {
                     const int t = groupFaces[group.first + j];
                     const bool any = ((tri.flags | tris[size_t(t)].flags) & GroupWithAny) != 0;
                     if (any || t == f ||
-                        (vdot(projectedS[k], projectedS[j]) > thresholdCos && vdot(projectedT[k], projectedT[j]) > thresholdCos))
+                        (vdot(projectedS[k], projectedS[j]) > thresholdCos &&
+                         vdot(projectedT[k], projectedT[j]) > thresholdCos))
                         members.push_back(t);
                 }
                 std::sort(members.begin(), members.end());
                 size_t s = 0;
-                while (s < subgroupCount && subgroups[s] != members) ++s;
+                while (s < subgroupCount && subgroups[s] != members)
+                    ++s;
                 if (s == subgroupCount) {
-                    if (subgroups.size() <= s) subgroups.emplace_back();
+                    if (subgroups.size() <= s)
+                        subgroups.emplace_back();
                     subgroups[s] = members;
-                    if (subgroupTangent.size() <= s) subgroupTangent.emplace_back();
+                    if (subgroupTangent.size() <= s)
+                        subgroupTangent.emplace_back();
                     subgroupTangent[s] = evalTangent(members, group.vertex);
                     ++subgroupCount;
                 }
@@ -285,14 +311,17 @@ struct Builder {
 
     // Degenerate triangles copy the space of the first healthy corner of the same vertex.
     void degenerateEpilogue(std::vector<Space> &spaces) const {
-        if (healthy == tris.size()) return;
+        if (healthy == tris.size())
+            return;
         std::unordered_map<int, size_t> firstCorner;
         for (size_t f = 0; f < healthy; ++f)
-            for (int i = 0; i < 3; ++i) firstCorner.emplace(tris[f].corner[i], 3 * size_t(tris[f].original) + size_t(i));
+            for (int i = 0; i < 3; ++i)
+                firstCorner.emplace(tris[f].corner[i], 3 * size_t(tris[f].original) + size_t(i));
         for (size_t t = healthy; t < tris.size(); ++t)
             for (int i = 0; i < 3; ++i) {
                 const auto it = firstCorner.find(tris[t].corner[i]);
-                if (it != firstCorner.end()) spaces[3 * size_t(tris[t].original) + size_t(i)] = spaces[it->second];
+                if (it != firstCorner.end())
+                    spaces[3 * size_t(tris[t].original) + size_t(i)] = spaces[it->second];
             }
     }
 };
@@ -301,7 +330,8 @@ struct Builder {
 
 std::vector<glm::vec4> computeMikkTSpaceTangents(const TangentInput &input) {
     std::vector<glm::vec4> out(3 * input.triangleCount, glm::vec4(1.0f, 0.0f, 0.0f, -1.0f));
-    if (input.triangleCount == 0 || !input.positions || !input.normals || !input.uvs) return out;
+    if (input.triangleCount == 0 || !input.positions || !input.normals || !input.uvs)
+        return out;
     Builder b(input);
     b.initTriangles();
     b.buildGroups();

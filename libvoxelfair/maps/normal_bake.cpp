@@ -36,7 +36,8 @@ bool validate(const NormalBakeMesh &m, const char *what, std::string &message) {
 }
 
 void loadUv(const NormalBakeMesh &m, size_t f, double side, glm::dvec2 q[3]) {
-    for (int k = 0; k < 3; ++k) q[k] = glm::dvec2(m.wedgeUv[3 * f + size_t(k)]) * side;
+    for (int k = 0; k < 3; ++k)
+        q[k] = glm::dvec2(m.wedgeUv[3 * f + size_t(k)]) * side;
 }
 
 uint8_t encode(float c) { return uint8_t(std::clamp(std::lround((c * 0.5f + 0.5f) * 255.0f), 0L, 255L)); }
@@ -78,16 +79,22 @@ public:
             glm::dvec2 q[3];
             loadUv(m, f, size, q);
             const glm::dvec2 lo = glm::min(q[0], glm::min(q[1], q[2])), hi = glm::max(q[0], glm::max(q[1], q[2]));
-            const int x0 = std::clamp(int(lo.x) / kCell, 0, cells_ - 1), x1 = std::clamp(int(hi.x) / kCell, 0, cells_ - 1);
-            const int y0 = std::clamp(int(lo.y) / kCell, 0, cells_ - 1), y1 = std::clamp(int(hi.y) / kCell, 0, cells_ - 1);
+            const int x0 = std::clamp(int(lo.x) / kCell, 0, cells_ - 1),
+                      x1 = std::clamp(int(hi.x) / kCell, 0, cells_ - 1);
+            const int y0 = std::clamp(int(lo.y) / kCell, 0, cells_ - 1),
+                      y1 = std::clamp(int(hi.y) / kCell, 0, cells_ - 1);
             for (int y = y0; y <= y1; ++y)
-                for (int x = x0; x <= x1; ++x) visit(size_t(y) * size_t(cells_) + size_t(x));
+                for (int x = x0; x <= x1; ++x)
+                    visit(size_t(y) * size_t(cells_) + size_t(x));
         };
-        for (size_t f = 0; f < m.faceCount; ++f) forCells(f, [&](size_t c) { ++start_[c + 1]; });
-        for (size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
+        for (size_t f = 0; f < m.faceCount; ++f)
+            forCells(f, [&](size_t c) { ++start_[c + 1]; });
+        for (size_t c = 1; c < start_.size(); ++c)
+            start_[c] += start_[c - 1];
         faces_.resize(start_.back());
         std::vector<uint32_t> fill(start_.begin(), start_.end() - 1);
-        for (size_t f = 0; f < m.faceCount; ++f) forCells(f, [&](size_t c) { faces_[fill[c]++] = uint32_t(f); });
+        for (size_t f = 0; f < m.faceCount; ++f)
+            forCells(f, [&](size_t c) { faces_[fill[c]++] = uint32_t(f); });
     }
     // The source face whose UV triangle holds texel-space point p, else the one whose UV centroid
     // is nearest among those of p's cell; UINT32_MAX when the cell is empty.
@@ -101,10 +108,12 @@ public:
             loadUv(mesh_, faces_[i], size_, q);
             const double d = doubleArea(q[0], q[1], q[2]);
             const double a = doubleArea(p, q[1], q[2]) / d, b = doubleArea(q[0], p, q[2]) / d;
-            if (d != 0 && a >= 0 && b >= 0 && a + b <= 1) return faces_[i];
+            if (d != 0 && a >= 0 && b >= 0 && a + b <= 1)
+                return faces_[i];
             const glm::dvec2 centroid = (q[0] + q[1] + q[2]) / 3.0;
             const double distance = glm::dot(centroid - p, centroid - p);
-            if (nearest == UINT32_MAX || distance < best) nearest = faces_[i], best = distance;
+            if (nearest == UINT32_MAX || distance < best)
+                nearest = faces_[i], best = distance;
         }
         return nearest;
     }
@@ -122,7 +131,8 @@ inline uint8_t encodeFast(float c) { return uint8_t(std::clamp(int(c * 127.5f + 
 
 NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &target, const NormalBakeOptions &options) {
     NormalMap out;
-    if (!validate(source, "source", out.message) || !validate(target, "target", out.message)) return out;
+    if (!validate(source, "source", out.message) || !validate(target, "target", out.message))
+        return out;
     if (options.size < 1 || options.size > 16384) {
         out.message = "the texture size must be between 1 and 16384 texels";
         return out;
@@ -151,7 +161,8 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
     for (size_t f = 0; f < target.faceCount; ++f) {
         loadUv(target, f, size, q);
         const double d = doubleArea(q[0], q[1], q[2]);
-        if (!(d != 0) || !std::isfinite(d)) continue;
+        if (!(d != 0) || !std::isfinite(d))
+            continue;
         // Barycentric weights as affine functions of the texel centre: l = l0 + lx x + ly y.
         const double a1 = (q[2].y - q[0].y) / d, b1 = -(q[2].x - q[0].x) / d;
         const double a2 = -(q[1].y - q[0].y) / d, b2 = (q[1].x - q[0].x) / d;
@@ -168,15 +179,18 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
         uint32_t hitFace = grid.find((q[0] + q[1] + q[2]) / 3.0);
         auto bake = [&](int x, int y, uint8_t kind) {
             const size_t i = size_t(y) * size_t(size) + size_t(x);
-            if (state[i] == kEmpty) painted.push_back(uint32_t(i));
+            if (state[i] == kEmpty)
+                painted.push_back(uint32_t(i));
             state[i] = kind;
-            if (hitFace == UINT32_MAX) return;
+            if (hitFace == UINT32_MAX)
+                return;
             const double px = x + 0.5 - q[0].x, py = y + 0.5 - q[0].y;
             float l1 = float(a1 * px + b1 * py), l2 = float(a2 * px + b2 * py), l0 = 1.0f - l1 - l2;
             if (l0 < 0 || l1 < 0 || l2 < 0) {
                 l0 = std::max(l0, 0.0f), l1 = std::max(l1, 0.0f), l2 = std::max(l2, 0.0f);
                 const float sum = l0 + l1 + l2;
-                if (sum > 0) l0 /= sum, l1 /= sum, l2 /= sum;
+                if (sum > 0)
+                    l0 /= sum, l1 /= sum, l2 /= sum;
             }
             glm::vec3 N = l0 * tn[0] + l1 * tn[1] + l2 * tn[2];
             const SurfaceWalk::Hit hit = walk.project(l0 * tp[0] + l1 * tp[1] + l2 * tp[2], hitFace, N, 64);
@@ -186,14 +200,16 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
                                 hit.weights.z * source.normals[sv[2]];
             glm::vec3 T = l0 * tt[0] + l1 * tt[1] + l2 * tt[2];
             const float nl = glm::dot(N, N), tl = glm::dot(T, T);
-            if (!(nl > 0.0f && tl > 0.0f)) return;
+            if (!(nl > 0.0f && tl > 0.0f))
+                return;
             N *= 1.0f / std::sqrt(nl), T *= 1.0f / std::sqrt(tl);
             const glm::vec3 B = sign * glm::cross(N, T);
             // Rows of the inverse of the column matrix [T B N]: cross products over its determinant.
             const glm::vec3 r0 = glm::cross(B, N), r1 = glm::cross(N, T), r2 = glm::cross(T, B);
             const glm::vec3 solved(glm::dot(r0, n), glm::dot(r1, n), glm::dot(r2, n));
             const float det = glm::dot(T, r0), length = glm::dot(solved, solved);
-            if (!(std::fabs(det) > 1e-6f) || !(length > 0.0f)) return;
+            if (!(std::fabs(det) > 1e-6f) || !(length > 0.0f))
+                return;
             const glm::vec3 c = solved * ((det < 0.0f ? -1.0f : 1.0f) / std::sqrt(length));
             uint8_t *p = &out.rgba[(size_t(size - 1 - y) * size_t(size) + size_t(x)) * 4];
             p[0] = encodeFast(c.x), p[1] = encodeFast(c.y), p[2] = encodeFast(c.z);
@@ -201,12 +217,15 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
         };
         rasterCentres(q[0], q[1], q[2], size, size, [&](int x, int y) { bake(x, y, kCentre); });
         rasterConservative(q[0], q[1], q[2], kMargin, size, size, [&](int x, int y) {
-            if (state[size_t(y) * size_t(size) + size_t(x)] == kEmpty) bake(x, y, kEdge);
+            if (state[size_t(y) * size_t(size) + size_t(x)] == kEmpty)
+                bake(x, y, kEdge);
         });
     }
     for (uint32_t i : painted) {
-        if (state[i] & kFromSource) ++out.texelsBaked;
-        else ++out.texelsWithoutSource;
+        if (state[i] & kFromSource)
+            ++out.texelsBaked;
+        else
+            ++out.texelsWithoutSource;
         state[i] = 1;
     }
 
@@ -222,7 +241,8 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
                 sum += glm::vec3(decode(p[0]), decode(p[1]), decode(p[2]));
             }
         const float length = glm::length(sum);
-        if (!(length > 0.0f)) return false;
+        if (!(length > 0.0f))
+            return false;
         sum /= length;
         uint8_t *p = &out.rgba[(size_t(size - 1 - y) * size_t(size) + size_t(x)) * 4];
         p[0] = encode(sum.x), p[1] = encode(sum.y), p[2] = encode(sum.z);

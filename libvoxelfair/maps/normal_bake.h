@@ -43,8 +43,8 @@ struct NormalBakeMesh {
 };
 
 struct NormalBakeOptions {
-    int size = 0;         // the atlas' side in texels (the base colour's)
-    int dilation = 2;     // gutter rings, as the base colour's (half the default gutter of 4)
+    int size = 0;      // the atlas' side in texels (the base colour's)
+    int dilation = 2;  // gutter rings, as the base colour's (half the default gutter of 4)
 };
 
 struct NormalMap {

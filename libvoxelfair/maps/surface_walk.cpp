@@ -11,13 +11,16 @@ namespace voxelfair {
 
 SurfaceWalk::SurfaceWalk(const glm::vec3 *positions, const uint32_t *triangles, size_t faceCount, size_t vertexCount)
     : frames_(faceCount), opposite_(buildEdgeAdjacency(triangles, faceCount, vertexCount).opposite),
-      positions_(positions), triangles_(triangles), faceNormals_(faceCount), nearPlane_(faceCount), vertexFaceStart_(vertexCount + 1, 0),
-      vertexFaces_(3 * faceCount) {
-    for (size_t c = 0; c < 3 * faceCount; ++c) ++vertexFaceStart_[triangles[c] + 1];
-    for (size_t v = 0; v < vertexCount; ++v) vertexFaceStart_[v + 1] += vertexFaceStart_[v];
+      positions_(positions), triangles_(triangles), faceNormals_(faceCount), nearPlane_(faceCount),
+      vertexFaceStart_(vertexCount + 1, 0), vertexFaces_(3 * faceCount) {
+    for (size_t c = 0; c < 3 * faceCount; ++c)
+        ++vertexFaceStart_[triangles[c] + 1];
+    for (size_t v = 0; v < vertexCount; ++v)
+        vertexFaceStart_[v + 1] += vertexFaceStart_[v];
     {
         std::vector<uint32_t> fill(vertexFaceStart_.begin(), vertexFaceStart_.end() - 1);
-        for (size_t c = 0; c < 3 * faceCount; ++c) vertexFaces_[fill[triangles[c]]++] = uint32_t(c / 3);
+        for (size_t c = 0; c < 3 * faceCount; ++c)
+            vertexFaces_[fill[triangles[c]]++] = uint32_t(c / 3);
     }
     for (size_t f = 0; f < faceCount; ++f) {
         const glm::vec3 a = positions[triangles[3 * f]], e1 = positions[triangles[3 * f + 1]] - a,
@@ -46,10 +49,12 @@ namespace {
 glm::vec3 closestWeights(const glm::vec3 &p, const glm::vec3 &a, const glm::vec3 &b, const glm::vec3 &c) {
     const glm::vec3 ab = b - a, ac = c - a, ap = p - a;
     const float d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
-    if (d1 <= 0 && d2 <= 0) return {1, 0, 0};
+    if (d1 <= 0 && d2 <= 0)
+        return {1, 0, 0};
     const glm::vec3 bp = p - b;
     const float d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
-    if (d3 >= 0 && d4 <= d3) return {0, 1, 0};
+    if (d3 >= 0 && d4 <= d3)
+        return {0, 1, 0};
     const float vc = d1 * d4 - d3 * d2;
     if (vc <= 0 && d1 >= 0 && d3 <= 0) {
         const float v = d1 / (d1 - d3);
@@ -57,7 +62,8 @@ glm::vec3 closestWeights(const glm::vec3 &p, const glm::vec3 &a, const glm::vec3
     }
     const glm::vec3 cp = p - c;
     const float d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
-    if (d6 >= 0 && d5 <= d6) return {0, 0, 1};
+    if (d6 >= 0 && d5 <= d6)
+        return {0, 0, 1};
     const float vb = d5 * d2 - d1 * d6;
     if (vb <= 0 && d2 >= 0 && d6 <= 0) {
         const float w = d2 / (d2 - d6);
@@ -69,7 +75,8 @@ glm::vec3 closestWeights(const glm::vec3 &p, const glm::vec3 &a, const glm::vec3
         return {0, 1 - w, w};
     }
     const float sum = va + vb + vc;
-    if (!(sum > 0)) return {1, 0, 0};
+    if (!(sum > 0))
+        return {1, 0, 0};
     const float v = vb / sum, w = vc / sum;
     return {1 - v - w, v, w};
 }
@@ -85,11 +92,15 @@ SurfaceWalk::Hit SurfaceWalk::project(const glm::vec3 &p, uint32_t start, const 
         w = glm::vec3(1.0f - w1 - w2, w1, w2);
         // The most negative weight's corner k faces the edge (k + 1, k + 2) = half-edge (k + 1) % 3.
         int k = 0;
-        if (w[1] < w[k]) k = 1;
-        if (w[2] < w[k]) k = 2;
-        if (w[k] >= 0.0f || step >= maxSteps) break;
+        if (w[1] < w[k])
+            k = 1;
+        if (w[2] < w[k])
+            k = 2;
+        if (w[k] >= 0.0f || step >= maxSteps)
+            break;
         const uint32_t across = opposite_[3 * size_t(face) + size_t((k + 1) % 3)];
-        if (across == kNoOpposite || across / 3 == previous) break;  // border, or a ridge walked back and forth
+        if (across == kNoOpposite || across / 3 == previous)
+            break;  // border, or a ridge walked back and forth
         previous = face;
         face = across / 3;
     }
@@ -97,7 +108,8 @@ SurfaceWalk::Hit SurfaceWalk::project(const glm::vec3 &p, uint32_t start, const 
     // point, or close to it.
     if (w.x >= 0.0f && w.y >= 0.0f && w.z >= 0.0f) {
         const float height = glm::dot(p - frames_[face].origin, faceNormals_[face]);
-        if (height * height <= nearPlane_[face]) return {face, w};
+        if (height * height <= nearPlane_[face])
+            return {face, w};
     }
     // Off the source: the closest facing point around the last triangle, while it improves.
     auto point = [&](uint32_t f, const glm::vec3 &weights) {
@@ -117,14 +129,17 @@ SurfaceWalk::Hit SurfaceWalk::project(const glm::vec3 &p, uint32_t start, const 
             const uint32_t v = triangles_[3 * size_t(centre) + size_t(k)];
             for (uint32_t i = vertexFaceStart_[v]; i < vertexFaceStart_[v + 1]; ++i) {
                 const uint32_t f = vertexFaces_[i];
-                if (f == best.face || glm::dot(faceNormals_[f], facing) <= 0.0f) continue;
+                if (f == best.face || glm::dot(faceNormals_[f], facing) <= 0.0f)
+                    continue;
                 const glm::vec3 weights = closest(f);
                 q = point(f, weights);
                 const float d = glm::dot(q - p, q - p);
-                if (d < bestDistance) bestDistance = d, best = {f, weights};
+                if (d < bestDistance)
+                    bestDistance = d, best = {f, weights};
             }
         }
-        if (best.face == centre) break;
+        if (best.face == centre)
+            break;
     }
     return best;
 }

@@ -44,8 +44,8 @@ private:
     std::vector<uint32_t> opposite_;  // half-edge 3f + i -> the other face's half-edge
     const glm::vec3 *positions_;
     const uint32_t *triangles_;
-    std::vector<glm::vec3> faceNormals_;  // unit
-    std::vector<float> nearPlane_;        // squared height under which a projection inside is kept
+    std::vector<glm::vec3> faceNormals_;                   // unit
+    std::vector<float> nearPlane_;                         // squared height under which a projection inside is kept
     std::vector<uint32_t> vertexFaceStart_, vertexFaces_;  // faces around each vertex (CSR)
 };
 

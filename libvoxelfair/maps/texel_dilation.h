@@ -25,9 +25,11 @@ void dilateTexels(int size, std::vector<uint8_t> &painted, const std::vector<uin
             for (int dy = -1; dy <= 1 && !edge; ++dy)
                 for (int dx = -1; dx <= 1 && !edge; ++dx) {
                     const int nx = x + dx, ny = y + dy;
-                    edge = nx >= 0 && ny >= 0 && nx < size && ny < size && !painted[size_t(ny) * size_t(size) + size_t(nx)];
+                    edge = nx >= 0 && ny >= 0 && nx < size && ny < size &&
+                           !painted[size_t(ny) * size_t(size) + size_t(nx)];
                 }
-            if (edge) frontier.push_back(seed);
+            if (edge)
+                frontier.push_back(seed);
         }
     }
     for (int ring = 0; ring < rings && !frontier.empty(); ++ring) {
@@ -37,19 +39,24 @@ void dilateTexels(int size, std::vector<uint8_t> &painted, const std::vector<uin
             for (int dy = -1; dy <= 1; ++dy)
                 for (int dx = -1; dx <= 1; ++dx) {
                     const int nx = x + dx, ny = y + dy;
-                    if (nx < 0 || ny < 0 || nx >= size || ny >= size) continue;
+                    if (nx < 0 || ny < 0 || nx >= size || ny >= size)
+                        continue;
                     const size_t n = size_t(ny) * size_t(size) + size_t(nx);
-                    if (painted[n]) continue;
+                    if (painted[n])
+                        continue;
                     painted[n] = 2;  // queued this ring
                     next.push_back(uint32_t(n));
                 }
         }
-        for (uint32_t n : next) painted[n] = 0;  // neighbours of this ring must not read it yet
+        for (uint32_t n : next)
+            painted[n] = 0;  // neighbours of this ring must not read it yet
         size_t kept = 0;
         for (uint32_t n : next)
-            if (fill(int(n % uint32_t(size)), int(n / uint32_t(size)))) next[kept++] = n;
+            if (fill(int(n % uint32_t(size)), int(n / uint32_t(size))))
+                next[kept++] = n;
         next.resize(kept);
-        for (uint32_t n : next) painted[n] = 1;
+        for (uint32_t n : next)
+            painted[n] = 1;
         frontier.swap(next);
     }
 }

@@ -33,7 +33,8 @@ void validatePolygons(const PolygonMesh &mesh) {
         throw MeshError(std::to_string(indexCount) + " polygon indices announced but no index array (null)");
     for (uint32_t i = 0; i < indexCount; ++i)
         if (mesh.polygonIndices[i] >= mesh.vertexCount) {
-            const uint32_t *const after = std::upper_bound(mesh.polygonOffsets, mesh.polygonOffsets + mesh.polygonCount + 1, i);
+            const uint32_t *const after =
+                std::upper_bound(mesh.polygonOffsets, mesh.polygonOffsets + mesh.polygonCount + 1, i);
             throw MeshError("polygon " + std::to_string(after - mesh.polygonOffsets - 1) + " uses vertex " +
                             std::to_string(mesh.polygonIndices[i]) + ", but there are " +
                             std::to_string(mesh.vertexCount) + " vertices");

@@ -18,7 +18,7 @@ inline bool isFinite(const glm::vec3 &p) { return std::isfinite(p.x) && std::isf
 inline glm::vec3 normalizedOrZero(const glm::vec3 &v) {
     const float length2 = glm::dot(v, v);
     return length2 > 0.0f && length2 <= std::numeric_limits<float>::max() ? v * (1.0f / std::sqrt(length2))
-                                                                            : glm::vec3(0.0f);
+                                                                          : glm::vec3(0.0f);
 }
 
 }  // namespace voxelfair

@@ -10,7 +10,8 @@ static void appendPart(SceneSurface &out, const BoundarySurface &surface, const 
     // No reserve per part: reserving exactly would reallocate on every part, which makes a scene
     // of many small parts (2^20 instances) quadratic. Growth by doubling stays linear.
     const uint32_t base = uint32_t(out.positions.size());
-    for (const glm::vec3 &p : surface.positions) out.positions.push_back(glm::vec3(part.toModel * glm::vec4(p, 1.0f)));
+    for (const glm::vec3 &p : surface.positions)
+        out.positions.push_back(glm::vec3(part.toModel * glm::vec4(p, 1.0f)));
 
     // A mirroring placement turns outward counter-clockwise quads inside out: undo it.
     const bool mirrored = glm::determinant(glm::mat3(part.toModel)) < 0.0f;

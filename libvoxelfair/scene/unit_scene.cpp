@@ -14,9 +14,11 @@ namespace voxelfair {
 namespace {
 
 bool endsWithNoCase(const std::string &text, const std::string &suffix) {
-    if (text.size() < suffix.size()) return false;
+    if (text.size() < suffix.size())
+        return false;
     for (size_t i = 0; i < suffix.size(); ++i)
-        if (std::tolower(static_cast<unsigned char>(text[text.size() - suffix.size() + i])) != suffix[i]) return false;
+        if (std::tolower(static_cast<unsigned char>(text[text.size() - suffix.size() + i])) != suffix[i])
+            return false;
     return true;
 }
 
@@ -32,7 +34,8 @@ const char *unitRoleName(UnitRole role) {
 }
 
 std::string unitCompanionStem(const std::string &bodyStem, UnitRole role) {
-    if (role == UnitRole::Body) return bodyStem;
+    if (role == UnitRole::Body)
+        return bodyStem;
     return bodyStem + (role == UnitRole::Turret ? "tur" : "barl");
 }
 
@@ -41,8 +44,10 @@ bool isUnitCompanionStem(const std::string &stem) {
 }
 
 UnitScene unitScene(const std::vector<UnitFile> &files, const UnitSceneOptions &options) {
-    if (files.empty() || files[0].role != UnitRole::Body) throw FormatError("a unit needs its body file first");
-    if (options.vxl.section != -1) throw FormatError("a unit is imported with all its sections");
+    if (files.empty() || files[0].role != UnitRole::Body)
+        throw FormatError("a unit needs its body file first");
+    if (options.vxl.section != -1)
+        throw FormatError("a unit is imported with all its sections");
     UnitScene unit;
     unit.nodes.front = ModelFront::PlusX;
 
@@ -54,20 +59,23 @@ UnitScene unitScene(const std::vector<UnitFile> &files, const UnitSceneOptions &
 
     size_t frames = 1;
     for (const UnitFile &file : files)
-        if (options.vxl.applyTransforms && file.hva) frames = std::max(frames, size_t(file.hva->frameCount));
+        if (options.vxl.applyTransforms && file.hva)
+            frames = std::max(frames, size_t(file.hva->frameCount));
 
     int turretNode = -1;
     for (size_t f = 0; f < files.size(); ++f) {
         const UnitFile &file = files[f];
         VxlSceneOptions o = options.vxl;
-        if (file.hva && f > 0) o.frame = std::min(o.frame, file.hva->frameCount - 1);
+        if (file.hva && f > 0)
+            o.frame = std::min(o.frame, file.hva->frameCount - 1);
         VoxelScene placed;
         try {
             placed = vxlScene(file.model, file.hva ? &*file.hva : nullptr, o);
         } catch (const FormatError &e) {
             throw FormatError(file.name + ": " + e.what());
         }
-        if (f == 0) unit.scene.palette = placed.palette;
+        if (f == 0)
+            unit.scene.palette = placed.palette;
 
         const glm::mat4 fileWorld = file.role == UnitRole::Body ? glm::mat4(1.0f) : turretPlace;
         ExportNode fileNode;
@@ -75,7 +83,8 @@ UnitScene unitScene(const std::vector<UnitFile> &files, const UnitSceneOptions &
         fileNode.parent = file.role == UnitRole::Barrel ? turretNode : -1;
         fileNode.world = fileWorld;
         const int fileIndex = int(unit.nodes.nodes.size());
-        if (file.role == UnitRole::Turret) turretNode = fileIndex;
+        if (file.role == UnitRole::Turret)
+            turretNode = fileIndex;
         unit.nodes.nodes.push_back(fileNode);
 
         const int firstPart = int(unit.scene.parts.size());
@@ -90,15 +99,17 @@ UnitScene unitScene(const std::vector<UnitFile> &files, const UnitSceneOptions &
             node.name = files.size() > 1 ? std::string(unitRoleName(file.role)) + "_" + section.name : section.name;
             node.parent = fileIndex;
             const auto pivotAt = [&](int frame) {
-                if (!options.vxl.applyTransforms) return fileWorld;
+                if (!options.vxl.applyTransforms)
+                    return fileWorld;
                 const Matrix3x4 *m = file.hva ? &file.hva->matrix(std::min(frame, file.hva->frameCount - 1),
-                                                                   int(&section - file.model.sections.data()))
+                                                                  int(&section - file.model.sections.data()))
                                               : nullptr;
                 return fileWorld * sectionPivotToModel(section, m);
             };
             node.world = pivotAt(o.frame);
             if (options.vxl.applyTransforms && file.hva && file.hva->frameCount > 1)
-                for (size_t k = 0; k < frames; ++k) node.frames.push_back(pivotAt(int(k)));
+                for (size_t k = 0; k < frames; ++k)
+                    node.frames.push_back(pivotAt(int(k)));
             unit.nodes.partNodes.push_back(int(unit.nodes.nodes.size()));
             unit.nodes.nodes.push_back(node);
         }

@@ -27,21 +27,26 @@ ExportScene voxExportNodes(const VoxFile &file, int frame) {
         node.world = pivotToModel(file, shown[i]);
         scene.nodes.push_back(node);
     }
-    if (file.frameCount <= 1 || file.nodes.empty()) return scene;  // a PACK's frames are other models
+    if (file.frameCount <= 1 || file.nodes.empty())
+        return scene;  // a PACK's frames are other models
 
     std::vector<std::vector<glm::mat4>> frames(shown.size());
     for (int f = 0; f < file.frameCount; ++f) {
         const std::vector<VoxInstance> at = voxInstances(file, f);
-        if (at.size() != shown.size()) return scene;
+        if (at.size() != shown.size())
+            return scene;
         for (size_t i = 0; i < at.size(); ++i) {
-            if (at[i].model != shown[i].model) return scene;
+            if (at[i].model != shown[i].model)
+                return scene;
             frames[i].push_back(pivotToModel(file, at[i]));
         }
     }
     for (size_t i = 0; i < shown.size(); ++i) {
         bool moves = false;
-        for (const glm::mat4 &m : frames[i]) moves = moves || m != frames[i][0];
-        if (moves) scene.nodes[i].frames = std::move(frames[i]);
+        for (const glm::mat4 &m : frames[i])
+            moves = moves || m != frames[i][0];
+        if (moves)
+            scene.nodes[i].frames = std::move(frames[i]);
     }
     return scene;
 }

@@ -20,8 +20,8 @@ const Key &keyAt(const std::vector<Key> &keys, int frame) {
 
 glm::mat4 centredOnPivot(const VoxelVolume &model) {
     // Integer division: the pivot of an odd side is the voxel corner just below its centre.
-    return glm::translate(glm::mat4(1.0f),
-                          -glm::vec3(float(model.sizeX / 2), float(model.sizeY / 2), float(model.sizeZ / 2)));
+    const glm::ivec3 pivot(model.sizeX / 2, model.sizeY / 2, model.sizeZ / 2);
+    return glm::translate(glm::mat4(1.0f), -glm::vec3(pivot));
 }
 
 // Depth-first walk below one node. The reader checked the graph (no cycles, depth and instance
@@ -30,7 +30,8 @@ class GraphWalk {
 public:
     GraphWalk(const VoxFile &file, int frame) : file_(file), frame_(frame) {
         for (const VoxLayer &layer : file.layers)
-            if (layer.hidden) hiddenLayers_.push_back(layer.id);
+            if (layer.hidden)
+                hiddenLayers_.push_back(layer.id);
     }
 
     std::vector<VoxInstance> run() {
@@ -41,26 +42,30 @@ public:
 private:
     void visit(int index, const glm::mat4 &toWorld, const std::string *name, int layer) {
         const VoxNode &node = file_.nodes[size_t(index)];
-        if (node.hidden) return;
+        if (node.hidden)
+            return;
         switch (node.kind) {
-            case VoxNodeKind::Transform: {
-                if (std::find(hiddenLayers_.begin(), hiddenLayers_.end(), node.layer) != hiddenLayers_.end()) return;
-                const glm::mat4 placed = toWorld * keyAt(node.transformKeys, frame_).transform;
-                visit(node.children.front(), placed, node.name.empty() ? name : &node.name, node.layer);
-                break;
-            }
-            case VoxNodeKind::Group:
-                for (int child : node.children) visit(child, toWorld, name, layer);
-                break;
-            case VoxNodeKind::Shape: {
-                VoxInstance instance;
-                instance.model = keyAt(node.shapeKeys, frame_).model;
-                instance.toModel = toWorld * centredOnPivot(file_.models[size_t(instance.model)]);
-                if (name != nullptr) instance.name = *name;
-                instance.layer = layer;
-                instances_.push_back(std::move(instance));
-                break;
-            }
+        case VoxNodeKind::Transform: {
+            if (std::find(hiddenLayers_.begin(), hiddenLayers_.end(), node.layer) != hiddenLayers_.end())
+                return;
+            const glm::mat4 placed = toWorld * keyAt(node.transformKeys, frame_).transform;
+            visit(node.children.front(), placed, node.name.empty() ? name : &node.name, node.layer);
+            break;
+        }
+        case VoxNodeKind::Group:
+            for (int child : node.children)
+                visit(child, toWorld, name, layer);
+            break;
+        case VoxNodeKind::Shape: {
+            VoxInstance instance;
+            instance.model = keyAt(node.shapeKeys, frame_).model;
+            instance.toModel = toWorld * centredOnPivot(file_.models[size_t(instance.model)]);
+            if (name != nullptr)
+                instance.name = *name;
+            instance.layer = layer;
+            instances_.push_back(std::move(instance));
+            break;
+        }
         }
     }
 
@@ -76,11 +81,13 @@ std::vector<VoxInstance> voxInstances(const VoxFile &file, int frame) {
     if (frame < 0 || frame >= file.frameCount)
         throw FormatError("there is no frame " + std::to_string(frame) + " (the file has " +
                           std::to_string(file.frameCount) + " frames, numbered from 0)");
-    if (file.root >= 0) return GraphWalk(file, frame).run();
+    if (file.root >= 0)
+        return GraphWalk(file, frame).run();
 
     std::vector<VoxInstance> instances;
     for (size_t m = 0; m < file.models.size(); ++m) {
-        if (file.packed && m != size_t(frame)) continue;
+        if (file.packed && m != size_t(frame))
+            continue;
         VoxInstance instance;
         instance.model = int(m);
         instance.toModel = centredOnPivot(file.models[m]);

@@ -14,7 +14,8 @@ PaletteChoice chooseVxlPalette(const VxlModel &model, const VxlSceneOptions &opt
     } else {
         choice = {defaultPalette(), "built-in default (the embedded palette is all zeros)"};
     }
-    if (options.houseColour) remapHouseColours(choice.palette, *options.houseColour, model.remapFirst, model.remapLast);
+    if (options.houseColour)
+        remapHouseColours(choice.palette, *options.houseColour, model.remapFirst, model.remapLast);
     return choice;
 }
 
@@ -25,8 +26,8 @@ VoxelScene vxlScene(const VxlModel &model, const HvaAnimation *hva, const VxlSce
                           std::to_string(sections) + ")");
     if (options.applyTransforms && hva != nullptr) {
         if (hva->sectionCount() != sections)
-            throw FormatError("the .hva describes " + std::to_string(hva->sectionCount()) + " sections but the .vxl has " +
-                              std::to_string(sections));
+            throw FormatError("the .hva describes " + std::to_string(hva->sectionCount()) +
+                              " sections but the .vxl has " + std::to_string(sections));
         if (options.frame < 0 || options.frame >= hva->frameCount)
             throw FormatError("there is no HVA frame " + std::to_string(options.frame) + " (the .hva has " +
                               std::to_string(hva->frameCount) + " frames, numbered from 0)");
@@ -35,13 +36,15 @@ VoxelScene vxlScene(const VxlModel &model, const HvaAnimation *hva, const VxlSce
     VoxelScene scene;
     scene.palette = chooseVxlPalette(model, options).palette;
     for (int s = 0; s < sections; ++s) {
-        if (options.section != -1 && s != options.section) continue;
+        if (options.section != -1 && s != options.section)
+            continue;
         const VxlSection &section = model.sections[size_t(s)];
         PlacedVolume part;
         part.volume = &section.volume;
         part.part = s;
         part.name = section.name;
-        if (options.applyTransforms) part.toModel = sectionToModel(section, hva ? &hva->matrix(options.frame, s) : nullptr);
+        if (options.applyTransforms)
+            part.toModel = sectionToModel(section, hva ? &hva->matrix(options.frame, s) : nullptr);
         scene.parts.push_back(part);
     }
     return scene;

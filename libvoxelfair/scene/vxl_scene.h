@@ -12,9 +12,9 @@
 namespace voxelfair {
 
 struct VxlSceneOptions {
-    int section = -1;              // -1: every section; otherwise only this one
-    int frame = 0;                 // HVA frame
-    bool applyTransforms = true;   // false: each section in its own voxel space (x, y, z in [0, size])
+    int section = -1;                          // -1: every section; otherwise only this one
+    int frame = 0;                             // HVA frame
+    bool applyTransforms = true;               // false: each section in its own voxel space (x, y, z in [0, size])
     const Palette *externalPalette = nullptr;  // a .pal the user chose; wins over the embedded one
     std::optional<Rgb> houseColour;            // regenerate the remap range 16..31 in this colour
 };

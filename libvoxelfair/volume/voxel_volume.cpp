@@ -5,20 +5,23 @@
 namespace voxelfair {
 
 const Voxel *VoxelVolume::find(int x, int y, int z) const {
-    if (x < 0 || y < 0 || z < 0 || x >= sizeX || y >= sizeY || z >= sizeZ) return nullptr;
+    if (x < 0 || y < 0 || z < 0 || x >= sizeX || y >= sizeY || z >= sizeZ)
+        return nullptr;
     const size_t c = columnIndex(x, y);
     const VoxelRun *first = runs.data() + columnFirstRun[c];
     const VoxelRun *last = runs.data() + columnFirstRun[c + 1];
     // Columns hold a handful of runs: the first run ending after z decides.
     const VoxelRun *run = std::upper_bound(first, last, z, [](int zz, const VoxelRun &r) { return zz < r.zEnd; });
-    if (run == last || z < run->zBegin) return nullptr;
+    if (run == last || z < run->zBegin)
+        return nullptr;
     return &voxels[run->firstVoxel + uint32_t(z - run->zBegin)];
 }
 
 VoxelVolumeBuilder::VoxelVolumeBuilder(int sizeX, int sizeY, int sizeZ) {
     valid_ = sizeX >= 1 && sizeY >= 1 && sizeZ >= 1 && sizeX <= kMaxVolumeSide && sizeY <= kMaxVolumeSide &&
              sizeZ <= kMaxVolumeSide;
-    if (!valid_) return;
+    if (!valid_)
+        return;
     volume_.sizeX = sizeX;
     volume_.sizeY = sizeY;
     volume_.sizeZ = sizeZ;
@@ -30,10 +33,12 @@ bool VoxelVolumeBuilder::add(int x, int y, int z, Voxel voxel) {
     if (!valid_ || x < 0 || y < 0 || z < 0 || x >= volume_.sizeX || y >= volume_.sizeY || z >= volume_.sizeZ)
         return false;
     const size_t column = volume_.columnIndex(x, y);
-    if (hasColumn_ && column < currentColumn_) return false;
+    if (hasColumn_ && column < currentColumn_)
+        return false;
     if (!hasColumn_ || column > currentColumn_) {
         // Columns up to this one are complete: each starts where the runs so far end.
-        while (volume_.columnFirstRun.size() <= column) volume_.columnFirstRun.push_back(uint32_t(volume_.runs.size()));
+        while (volume_.columnFirstRun.size() <= column)
+            volume_.columnFirstRun.push_back(uint32_t(volume_.runs.size()));
         currentColumn_ = column;
         hasColumn_ = true;
         lastZ_ = -1;
@@ -52,9 +57,11 @@ bool VoxelVolumeBuilder::add(int x, int y, int z, Voxel voxel) {
 }
 
 VoxelVolume VoxelVolumeBuilder::finish() {
-    if (!valid_) return VoxelVolume{};
+    if (!valid_)
+        return VoxelVolume{};
     const size_t columns = size_t(volume_.sizeX) * size_t(volume_.sizeY);
-    while (volume_.columnFirstRun.size() < columns + 1) volume_.columnFirstRun.push_back(uint32_t(volume_.runs.size()));
+    while (volume_.columnFirstRun.size() < columns + 1)
+        volume_.columnFirstRun.push_back(uint32_t(volume_.runs.size()));
     valid_ = false;
     return std::move(volume_);
 }

@@ -22,7 +22,8 @@ namespace voxelfair::fuzz {
 }
 
 inline void check(bool ok, const char *what) {
-    if (!ok) fail("%s", what);
+    if (!ok)
+        fail("%s", what);
 }
 
 // Quads are 4 vertex indices each. Checks that:
@@ -39,21 +40,27 @@ inline void checkClosedManifold(const std::vector<uint32_t> &quads, size_t verte
     // scanning the corners of their start vertex.
     std::vector<size_t> first(vertexCount + 1, 0), byVertex(corners);
     for (size_t c = 0; c < corners; ++c) {
-        if (quads[c] >= vertexCount) fail("quad %zu uses vertex %u of %zu", c / 4, quads[c], vertexCount);
-        if (quads[c] == quads[next(c)]) fail("quad %zu has a degenerate edge at vertex %u", c / 4, quads[c]);
+        if (quads[c] >= vertexCount)
+            fail("quad %zu uses vertex %u of %zu", c / 4, quads[c], vertexCount);
+        if (quads[c] == quads[next(c)])
+            fail("quad %zu has a degenerate edge at vertex %u", c / 4, quads[c]);
         ++first[quads[c] + 1];
     }
-    for (size_t v = 0; v < vertexCount; ++v) first[v + 1] += first[v];
+    for (size_t v = 0; v < vertexCount; ++v)
+        first[v + 1] += first[v];
     std::vector<size_t> fill(first.begin(), first.end() - 1);
-    for (size_t c = 0; c < corners; ++c) byVertex[fill[quads[c]]++] = c;
+    for (size_t c = 0; c < corners; ++c)
+        byVertex[fill[quads[c]]++] = c;
     // The corner the directed edge from -> to leaves from; it must exist and be unique.
     const auto cornerOf = [&](uint32_t from, uint32_t to) {
         size_t found = corners;
         for (size_t i = first[from]; i < first[from + 1]; ++i) {
             const size_t c = byVertex[i];
-            if (quads[next(c)] != to) continue;
+            if (quads[next(c)] != to)
+                continue;
             if (found != corners)
-                fail("directed edge %u -> %u is used twice (quads %zu and %zu): wrong orientation or a non-manifold edge",
+                fail("directed edge %u -> %u is used twice (quads %zu and %zu): wrong orientation or a non-manifold "
+                     "edge",
                      from, to, found / 4, c / 4);
             found = c;
         }
@@ -67,7 +74,8 @@ inline void checkClosedManifold(const std::vector<uint32_t> &quads, size_t verte
     std::vector<uint32_t> fans(vertexCount, 0);
     std::vector<uint8_t> visited(corners, 0);
     for (size_t start = 0; start < corners; ++start) {
-        if (visited[start]) continue;
+        if (visited[start])
+            continue;
         const uint32_t v = quads[start];
         size_t c = start;
         do {
@@ -77,8 +85,10 @@ inline void checkClosedManifold(const std::vector<uint32_t> &quads, size_t verte
         ++fans[v];
     }
     for (size_t v = 0; v < vertexCount; ++v) {
-        if (fans[v] == 0) fail("vertex %zu is used by no quad", v);
-        if (fans[v] > 1) fail("vertex %zu joins %u separate fans of quads: not a manifold point", v, fans[v]);
+        if (fans[v] == 0)
+            fail("vertex %zu is used by no quad", v);
+        if (fans[v] > 1)
+            fail("vertex %zu joins %u separate fans of quads: not a manifold point", v, fans[v]);
     }
 }
 

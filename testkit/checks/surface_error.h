@@ -17,10 +17,10 @@
 namespace voxelfair::shapes {
 
 struct SurfaceError {
-    double rms = 0.0;      // root mean square distance of the samples to the true surface
-    double max = 0.0;      // largest |distance| among the samples
-    double bias = 0.0;     // mean signed distance: > 0 = the mesh lies outside on average
-    double volume = 0.0;   // enclosed by the mesh
+    double rms = 0.0;                  // root mean square distance of the samples to the true surface
+    double max = 0.0;                  // largest |distance| among the samples
+    double bias = 0.0;                 // mean signed distance: > 0 = the mesh lies outside on average
+    double volume = 0.0;               // enclosed by the mesh
     double volumeChangePercent = 0.0;  // (mesh volume - true volume) / true volume * 100
 };
 
@@ -36,9 +36,8 @@ inline double enclosedVolume(const std::vector<glm::vec3> &positions, const std:
 
 // `sampleCount` points, uniform by area (triangle picked by area, then uniform barycentrics),
 // from a fixed-seed generator: the same mesh always gives the same figures.
-inline SurfaceError measureSurfaceError(const std::vector<glm::vec3> &positions,
-                                        const std::vector<uint32_t> &triangles, const Shape &shape,
-                                        size_t sampleCount = 200000, uint64_t seed = 20100808) {
+inline SurfaceError measureSurfaceError(const std::vector<glm::vec3> &positions, const std::vector<uint32_t> &triangles,
+                                        const Shape &shape, size_t sampleCount = 200000, uint64_t seed = 20100808) {
     SurfaceError e;
     e.volume = enclosedVolume(positions, triangles);
     e.volumeChangePercent = (e.volume - shape.volume) / shape.volume * 100.0;

@@ -38,7 +38,8 @@ inline FairedMesh fairedMesh(const pipeline::Model &model, float texelsPerVoxel)
     out.triangles = chain.triangles;
     // Placed parts may have other voxel sizes (HVA scales): the largest part's voxel is the unit.
     std::vector<size_t> partQuads(model.toDisplay.size(), 0);
-    for (uint32_t part : mesh.quadPart) ++partQuads[part];
+    for (uint32_t part : mesh.quadPart)
+        ++partQuads[part];
     const size_t largest = size_t(std::max_element(partQuads.begin(), partQuads.end()) - partQuads.begin());
     const float scale = std::cbrt(std::abs(glm::determinant(glm::mat3(model.toDisplay[largest]))));
     pipeline::QuadMesh placed = mesh;
@@ -61,7 +62,8 @@ inline std::vector<std::unique_ptr<pipeline::Model>> sharedModels(const std::fil
     for (const char *sub : {"vxl", "vox"})
         if (std::filesystem::is_directory(dir / sub))
             for (const auto &entry : std::filesystem::directory_iterator(dir / sub))
-                if (entry.path().extension() == std::string(".") + sub) files.push_back(entry.path());
+                if (entry.path().extension() == std::string(".") + sub)
+                    files.push_back(entry.path());
     std::sort(files.begin(), files.end());
     std::vector<std::unique_ptr<pipeline::Model>> models;
     for (const auto &file : files) {
@@ -69,7 +71,8 @@ inline std::vector<std::unique_ptr<pipeline::Model>> sharedModels(const std::fil
             models.push_back(file.extension() == ".vxl" ? pipeline::loadVxl(file.string(), (dir / "pal").string())
                                                         : pipeline::loadVox(file.string()));
         } catch (const std::exception &e) {
-            if (refused) refused->push_back(file.filename().string() + ": " + e.what());
+            if (refused)
+                refused->push_back(file.filename().string() + ": " + e.what());
         }
     }
     return models;

@@ -117,10 +117,12 @@ inline std::unique_ptr<Model> loadVxl(const std::string &path, const std::string
     // importer does: the whole tank, each file by its own .hva.
     if (wholeUnit && !isUnitCompanionStem(model->name)) {
         for (UnitRole role : {UnitRole::Turret, UnitRole::Barrel}) {
-            const std::filesystem::path companion = std::filesystem::path(path).parent_path() /
-                                                    (unitCompanionStem(model->name, role) + ".vxl");
-            if (!std::filesystem::exists(companion)) continue;
-            if (model->unit.empty()) model->unit.push_back({UnitRole::Body, model->name, model->vxl, model->hva});
+            const std::filesystem::path companion =
+                std::filesystem::path(path).parent_path() / (unitCompanionStem(model->name, role) + ".vxl");
+            if (!std::filesystem::exists(companion))
+                continue;
+            if (model->unit.empty())
+                model->unit.push_back({UnitRole::Body, model->name, model->vxl, model->hva});
             UnitFile file{role, companion.filename().string(), {}, {}};
             const std::vector<uint8_t> b = readFileBytes(companion.string());
             file.model = readVxl(b.data(), b.size());
@@ -194,7 +196,7 @@ struct QuadMesh {
     std::vector<uint32_t> quads;
     std::vector<glm::u8vec3> quadColours;
     std::vector<uint32_t> quadPart;  // index into the scene's parts
-    float voxelSize = 1.0f;  // edge length of one voxel in the mesh's units
+    float voxelSize = 1.0f;          // edge length of one voxel in the mesh's units
 
     size_t quadCount() const { return quads.size() / 4; }
     size_t vertexCount() const { return positions.size(); }
@@ -315,7 +317,8 @@ inline std::vector<glm::vec3> displayPositions(const QuadMesh &mesh, const Model
     return out;
 }
 
-inline std::vector<glm::vec3> displayNormals(const QuadMesh &mesh, const Model &model, const std::vector<glm::vec3> &normals) {
+inline std::vector<glm::vec3> displayNormals(const QuadMesh &mesh, const Model &model,
+                                             const std::vector<glm::vec3> &normals) {
     std::vector<glm::mat3> normalMatrix;
     for (const glm::mat4 &m : model.toDisplay)
         normalMatrix.push_back(glm::transpose(glm::inverse(glm::mat3(m))));

@@ -22,8 +22,8 @@ namespace voxelfair::shapes {
 struct Shape {
     std::string name;
     std::function<double(const glm::dvec3 &)> sdf;  // exact signed distance, negative inside
-    glm::dvec3 boundsMin{0.0}, boundsMax{0.0};       // contains the solid
-    double volume = 0.0;                             // of the solid
+    glm::dvec3 boundsMin{0.0}, boundsMax{0.0};      // contains the solid
+    double volume = 0.0;                            // of the solid
 };
 
 inline constexpr double kPi = 3.14159265358979323846;
@@ -92,8 +92,10 @@ inline Shape cappedCylinder(const glm::dvec3 &a, const glm::dvec3 &b, double rad
 // The voxels whose centre is inside `shape`, in a volume just large enough to hold its bounds
 // (the shape must lie at non-negative coordinates; parts below 0 are cut off). `payload` gives
 // each solid voxel its colour/normal.
-inline VoxelVolume voxelize(const Shape &shape,
-                            const std::function<Voxel(int, int, int)> &payload = [](int, int, int) { return Voxel{1, 0}; }) {
+inline VoxelVolume voxelize(
+    const Shape &shape, const std::function<Voxel(int, int, int)> &payload = [](int, int, int) {
+        return Voxel{1, 0};
+    }) {
     const glm::ivec3 size = glm::max(glm::ivec3(glm::ceil(shape.boundsMax)) + 1, glm::ivec3(1));
     const glm::ivec3 lo = glm::max(glm::ivec3(glm::floor(shape.boundsMin)) - 1, glm::ivec3(0));
     VoxelVolumeBuilder builder(size.x, size.y, size.z);

@@ -120,8 +120,8 @@ inline TestMesh voxelSphere(double radius) {
 }
 
 inline TestMesh voxelBox(int sx, int sy, int sz) {
-    return voxelSurface("box " + std::to_string(sx) + "x" + std::to_string(sy) + "x" + std::to_string(sz), sx, sy,
-                        sz, [](int, int, int) { return true; });
+    return voxelSurface("box " + std::to_string(sx) + "x" + std::to_string(sy) + "x" + std::to_string(sz), sx, sy, sz,
+                        [](int, int, int) { return true; });
 }
 
 // Ring around the z axis: major radius R, tube radius r.

@@ -19,9 +19,7 @@ struct DenseGrid {
     DenseGrid(int sx, int sy, int sz)
         : sizeX(sx), sizeY(sy), sizeZ(sz), solid(size_t(sx) * sy * sz, 0), payload(size_t(sx) * sy * sz) {}
 
-    bool inside(int x, int y, int z) const {
-        return x >= 0 && y >= 0 && z >= 0 && x < sizeX && y < sizeY && z < sizeZ;
-    }
+    bool inside(int x, int y, int z) const { return x >= 0 && y >= 0 && z >= 0 && x < sizeX && y < sizeY && z < sizeZ; }
     size_t index(int x, int y, int z) const { return (size_t(z) * sizeY + y) * sizeX + x; }
     bool at(int x, int y, int z) const { return inside(x, y, z) && solid[index(x, y, z)]; }
 
@@ -30,14 +28,16 @@ struct DenseGrid {
         return Voxel{uint8_t(1 + (x + 7 * y + 31 * z) % 251), uint8_t((3 * x + 5 * y + 11 * z) % 256)};
     }
     void set(int x, int y, int z, bool on = true) {
-        if (!inside(x, y, z)) throw std::out_of_range("DenseGrid::set");
+        if (!inside(x, y, z))
+            throw std::out_of_range("DenseGrid::set");
         solid[index(x, y, z)] = on;
         payload[index(x, y, z)] = payloadFor(x, y, z);
     }
 
     size_t count() const {
         size_t n = 0;
-        for (uint8_t s : solid) n += s;
+        for (uint8_t s : solid)
+            n += s;
         return n;
     }
 
@@ -56,7 +56,8 @@ inline DenseGrid box(int sx, int sy, int sz) {
     DenseGrid g(sx, sy, sz);
     for (int z = 0; z < sz; ++z)
         for (int y = 0; y < sy; ++y)
-            for (int x = 0; x < sx; ++x) g.set(x, y, z);
+            for (int x = 0; x < sx; ++x)
+                g.set(x, y, z);
     return g;
 }
 
@@ -69,7 +70,8 @@ inline DenseGrid sphere(int radius, int margin = 0) {
         for (int y = 0; y < side; ++y)
             for (int x = 0; x < side; ++x) {
                 const double dx = x + 0.5 - c, dy = y + 0.5 - c, dz = z + 0.5 - c;
-                if (dx * dx + dy * dy + dz * dz <= r2) g.set(x, y, z);
+                if (dx * dx + dy * dy + dz * dz <= r2)
+                    g.set(x, y, z);
             }
     return g;
 }
@@ -82,7 +84,8 @@ inline DenseGrid randomGrid(int sx, int sy, int sz, double density, uint32_t see
     for (int z = 0; z < sz; ++z)
         for (int y = 0; y < sy; ++y)
             for (int x = 0; x < sx; ++x)
-                if (on(rng)) g.set(x, y, z);
+                if (on(rng))
+                    g.set(x, y, z);
     return g;
 }
 

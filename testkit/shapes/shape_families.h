@@ -93,8 +93,8 @@ inline Shape placed(std::string name, std::function<double(const glm::dvec3 &)> 
     s.name = std::move(name);
     const glm::dmat3 inverse = glm::transpose(rotation);
     s.sdf = [local = std::move(local), inverse, centre](const glm::dvec3 &p) { return local(inverse * (p - centre)); };
-    const glm::dvec3 reach = glm::abs(rotation[0]) * extent.x + glm::abs(rotation[1]) * extent.y +
-                             glm::abs(rotation[2]) * extent.z;
+    const glm::dvec3 reach =
+        glm::abs(rotation[0]) * extent.x + glm::abs(rotation[1]) * extent.y + glm::abs(rotation[2]) * extent.z;
     s.boundsMin = centre - reach;
     s.boundsMax = centre + reach;
     s.volume = volume;
@@ -152,7 +152,7 @@ inline double polygonDistance2(const glm::dvec2 &p, const std::vector<glm::dvec2
         const glm::dvec2 e = v[j] - v[i], w = p - v[i];
         const glm::dvec2 b = w - e * glm::clamp(glm::dot(w, e) / glm::dot(e, e), 0.0, 1.0);
         d = std::min(d, glm::dot(b, b));
-        const bool c0 = p.y >= v[i].y, c1 = p.y < v[j].y, c2 = e.x * w.y > e.y * w.x;
+        const bool c0 = p.y >= v[i].y, c1 = p.y<v[j].y, c2 = e.x * w.y> e.y * w.x;
         if ((c0 && c1 && c2) || (!c0 && !c1 && !c2))
             s = -s;
     }
@@ -196,11 +196,11 @@ inline double ellipsoidDistance(const glm::dvec3 &p, const glm::dvec3 &e) {
 
 // Which goal a family is held to (the smoother's tests and report read it).
 enum class FamilyGoal {
-    Curved,       // smooth curved solids: spheres, ellipsoids, tori, capsules
-    Cylinder,     // cylinders and cones with sharp rims, at any angle
-    LatticeBox,   // boxes with faces on lattice planes
-    FlatAndEdges, // flat faces and straight edges at an angle: turned boxes, rounded boxes, plates,
-                  // wedges, unions
+    Curved,        // smooth curved solids: spheres, ellipsoids, tori, capsules
+    Cylinder,      // cylinders and cones with sharp rims, at any angle
+    LatticeBox,    // boxes with faces on lattice planes
+    FlatAndEdges,  // flat faces and straight edges at an angle: turned boxes, rounded boxes, plates,
+                   // wedges, unions
 };
 
 struct Family {
@@ -241,13 +241,15 @@ inline glm::dmat3 turnAboutTwoAxes(std::mt19937_64 &random) {
 }
 
 inline Shape orientedBox(std::string name, const glm::dvec3 &half, const glm::dmat3 &rotation) {
-    return placed(std::move(name), [half](const glm::dvec3 &p) { return boxDistance(p, half); }, half,
-                  8.0 * half.x * half.y * half.z, rotation, glm::dvec3(0.0));
+    return placed(
+        std::move(name), [half](const glm::dvec3 &p) { return boxDistance(p, half); }, half,
+        8.0 * half.x * half.y * half.z, rotation, glm::dvec3(0.0));
 }
 
 inline Shape orientedRoundedBox(std::string name, const glm::dvec3 &half, double radius, const glm::dmat3 &rotation) {
-    return placed(std::move(name), [half, radius](const glm::dvec3 &p) { return roundedBoxDistance(p, half, radius); },
-                  half, roundedBoxVolume(half, radius), rotation, glm::dvec3(0.0));
+    return placed(
+        std::move(name), [half, radius](const glm::dvec3 &p) { return roundedBoxDistance(p, half, radius); }, half,
+        roundedBoxVolume(half, radius), rotation, glm::dvec3(0.0));
 }
 
 // A hull (rounded box) with a barrel (capped cylinder) standing out of its top face: the barrel
@@ -255,12 +257,14 @@ inline Shape orientedRoundedBox(std::string name, const glm::dvec3 &half, double
 // the barrel's part above the face. Exact distance outside; inside, near the seam, a bound.
 inline Shape barrelOnHull(std::mt19937_64 &random) {
     const glm::dvec3 half(uniformIn(random, 9, 13), uniformIn(random, 6, 9), uniformIn(random, 4, 6));
-    const double fillet = uniformIn(random, 2, 3.5), barrel = uniformIn(random, 2.5, 4), length = uniformIn(random, 8, 14);
+    const double fillet = uniformIn(random, 2, 3.5), barrel = uniformIn(random, 2.5, 4),
+                 length = uniformIn(random, 8, 14);
     const glm::dvec3 foot(uniformIn(random, -2, 2), uniformIn(random, -1, 1), half.z - 2.0);
     const glm::dvec3 top = foot + glm::dvec3(0, 0, 2.0 + length);
     auto local = [=](const glm::dvec3 &p) {
         const glm::dvec3 w = p - foot;
-        const double qr = std::hypot(w.x, w.y) - barrel, qa = std::fabs(w.z - 0.5 * (top.z - foot.z)) - 0.5 * (top.z - foot.z);
+        const double qr = std::hypot(w.x, w.y) - barrel,
+                     qa = std::fabs(w.z - 0.5 * (top.z - foot.z)) - 0.5 * (top.z - foot.z);
         const double cylinder = std::hypot(std::max(qr, 0.0), std::max(qa, 0.0)) + std::min(std::max(qr, qa), 0.0);
         return std::min(roundedBoxDistance(p, half, fillet), cylinder);
     };
@@ -352,38 +356,38 @@ inline std::vector<Family> shapeFamilies() {
                      const double radius = uniformIn(g, 2, 6);
                      const glm::dvec3 half(uniformIn(g, radius + 3, 14), uniformIn(g, radius + 3, 11),
                                            uniformIn(g, radius + 2, 9));
-                     return atOffset(
-                         orientedRoundedBox("rounded box", half, radius, randomRotationAwayFromLattice(g, boxNormals())),
-                         randomFraction(g));
+                     return atOffset(orientedRoundedBox("rounded box", half, radius,
+                                                        randomRotationAwayFromLattice(g, boxNormals())),
+                                     randomFraction(g));
                  }});
-    f.push_back({"rounded box on the lattice", FamilyGoal::FlatAndEdges, [](std::mt19937_64 &g) {
-                     // Flat faces on lattice planes (see the header); the fillets at any radius.
-                     const double radius = uniformIn(g, 2, 6);
-                     const glm::dvec3 size(double(int(2 * radius) + 6 + g() % 16), double(int(2 * radius) + 6 + g() % 12),
-                                           double(int(2 * radius) + 4 + g() % 8));
-                     return atOffset(orientedRoundedBox("rounded box on the lattice", 0.5 * size, radius, glm::dmat3(1.0)),
-                                     glm::dvec3(0.0));
-                 }});
+    f.push_back(
+        {"rounded box on the lattice", FamilyGoal::FlatAndEdges, [](std::mt19937_64 &g) {
+             // Flat faces on lattice planes (see the header); the fillets at any radius.
+             const double radius = uniformIn(g, 2, 6);
+             const glm::dvec3 size(double(int(2 * radius) + 6 + g() % 16), double(int(2 * radius) + 6 + g() % 12),
+                                   double(int(2 * radius) + 4 + g() % 8));
+             return atOffset(orientedRoundedBox("rounded box on the lattice", 0.5 * size, radius, glm::dmat3(1.0)),
+                             glm::dvec3(0.0));
+         }});
     f.push_back({"plate", FamilyGoal::FlatAndEdges, [](std::mt19937_64 &g) {
                      const glm::dvec3 half(uniformIn(g, 8, 14), uniformIn(g, 6, 12), uniformIn(g, 1.0, 2.0));
                      return atOffset(orientedBox("plate", half, randomRotationAwayFromLattice(g, boxNormals())),
                                      randomFraction(g));
                  }});
-    f.push_back({"wedge", FamilyGoal::FlatAndEdges, [](std::mt19937_64 &g) {
-                     // A right prism of a triangle with one edge at 25-60 degrees.
-                     const double a = uniformIn(g, 12, 22), angle = uniformIn(g, 25, 60) * kPi / 180.0,
-                                  h = uniformIn(g, 4, 9);
-                     const std::vector<glm::dvec2> t = {{-a / 2, -a * std::tan(angle) / 4},
-                                                        {a / 2, -a * std::tan(angle) / 4},
-                                                        {-a / 2, 3 * a * std::tan(angle) / 4}};
-                     std::vector<glm::dvec3> normals = {kAxes[2], kAxes[1], kAxes[0],
-                                                        {std::sin(angle), std::cos(angle), 0.0}};
-                     auto local = [t, h](const glm::dvec3 &p) { return extrusionDistance(p, t, h); };
-                     const double reach = 3 * a * std::tan(angle) / 4;
-                     return atOffset(placed("wedge", local, glm::dvec3(a / 2, reach, h), polygonArea(t) * 2 * h,
-                                            randomRotationAwayFromLattice(g, normals), glm::dvec3(0.0)),
-                                     randomFraction(g));
-                 }});
+    f.push_back(
+        {"wedge", FamilyGoal::FlatAndEdges, [](std::mt19937_64 &g) {
+             // A right prism of a triangle with one edge at 25-60 degrees.
+             const double a = uniformIn(g, 12, 22), angle = uniformIn(g, 25, 60) * kPi / 180.0, h = uniformIn(g, 4, 9);
+             const std::vector<glm::dvec2> t = {{-a / 2, -a * std::tan(angle) / 4},
+                                                {a / 2, -a * std::tan(angle) / 4},
+                                                {-a / 2, 3 * a * std::tan(angle) / 4}};
+             std::vector<glm::dvec3> normals = {kAxes[2], kAxes[1], kAxes[0], {std::sin(angle), std::cos(angle), 0.0}};
+             auto local = [t, h](const glm::dvec3 &p) { return extrusionDistance(p, t, h); };
+             const double reach = 3 * a * std::tan(angle) / 4;
+             return atOffset(placed("wedge", local, glm::dvec3(a / 2, reach, h), polygonArea(t) * 2 * h,
+                                    randomRotationAwayFromLattice(g, normals), glm::dvec3(0.0)),
+                             randomFraction(g));
+         }});
     f.push_back({"chamfered plate", FamilyGoal::FlatAndEdges, [](std::mt19937_64 &g) {
                      const double w = uniformIn(g, 8, 14), d = uniformIn(g, 6, 11), c = uniformIn(g, 2, 4),
                                   h = uniformIn(g, 2, 4);

@@ -32,7 +32,8 @@ inline VoxelVolume hollowVolume(int sizeX, int sizeY, int sizeZ, const std::func
             for (int dy = -wall; dy <= wall; ++dy)
                 for (int dx = -wall; dx <= wall; ++dx) {
                     const int nx = x + dx, ny = y + dy, nz = z + dz;
-                    if (nx < 0 || ny < 0 || nz < 0 || nx >= sizeX || ny >= sizeY || nz >= sizeZ || !solid[at(nx, ny, nz)])
+                    if (nx < 0 || ny < 0 || nz < 0 || nx >= sizeX || ny >= sizeY || nz >= sizeZ ||
+                        !solid[at(nx, ny, nz)])
                         return true;
                 }
         return false;
@@ -82,10 +83,14 @@ inline std::unique_ptr<Model> syntheticTankModel() {
         return centre(z) < 24.0 - std::max(front, rear);
     };
     auto inFender = [&](int x, int y, int z) { return z == 17 && x >= 8 && x < 122 && y >= 1 && y < 65; };
-    auto isRivet = [&](int x, int y, int z) { return z == 24 && x % 6 == 3 && y % 6 == 3 && x >= 16 && x < 100 && y >= 12 && y < 54; };
+    auto isRivet = [&](int x, int y, int z) {
+        return z == 24 && x % 6 == 3 && y % 6 == 3 && x >= 16 && x < 100 && y >= 12 && y < 54;
+    };
     VoxelVolume hull = hollowVolume(
         130, 66, 30,
-        [&](int x, int y, int z) { return inTrack(x, y, z) || inHull(x, y, z) || inFender(x, y, z) || isRivet(x, y, z); },
+        [&](int x, int y, int z) {
+            return inTrack(x, y, z) || inHull(x, y, z) || inFender(x, y, z) || isRivet(x, y, z);
+        },
         [&](int x, int y, int z) -> uint8_t {
             if (isRivet(x, y, z))
                 return Rivet;
@@ -98,7 +103,9 @@ inline std::unique_ptr<Model> syntheticTankModel() {
     auto inBody = [&](int x, int y, int z) {
         return z < 15 && std::hypot(centre(x) - 24.0, centre(y) - 23.0) < 20.0 - std::max(0.0, centre(z) - 9.0);
     };
-    auto inHatch = [&](int x, int y, int z) { return z >= 15 && z < 18 && std::hypot(centre(x) - 18.0, centre(y) - 30.0) < 5.0; };
+    auto inHatch = [&](int x, int y, int z) {
+        return z >= 15 && z < 18 && std::hypot(centre(x) - 18.0, centre(y) - 30.0) < 5.0;
+    };
     auto inMantlet = [&](int x, int y, int z) { return x >= 40 && x < 50 && y >= 15 && y < 31 && z >= 3 && z < 13; };
     auto inBarrel = [&](int x, int y, int z) {
         const double r = std::hypot(centre(y) - 23.0, centre(z) - 8.0);
@@ -106,7 +113,9 @@ inline std::unique_ptr<Model> syntheticTankModel() {
     };
     VoxelVolume turret = hollowVolume(
         115, 46, 22,
-        [&](int x, int y, int z) { return inBody(x, y, z) || inHatch(x, y, z) || inMantlet(x, y, z) || inBarrel(x, y, z); },
+        [&](int x, int y, int z) {
+            return inBody(x, y, z) || inHatch(x, y, z) || inMantlet(x, y, z) || inBarrel(x, y, z);
+        },
         [&](int x, int y, int z) -> uint8_t {
             if (inBarrel(x, y, z) && !inMantlet(x, y, z))
                 return Metal;

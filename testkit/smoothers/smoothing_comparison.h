@@ -44,7 +44,7 @@ inline std::vector<shapes::Shape> comparisonShapes() {
 struct FamilyShape {
     std::string family;  // "sphere", "torus", "cylinder", "box"
     shapes::Shape shape;
-    double size = 0.0;   // sphere radius, torus major radius, cylinder radius, box smallest side
+    double size = 0.0;  // sphere radius, torus major radius, cylinder radius, box smallest side
 };
 
 inline std::vector<FamilyShape> fidelityShapes() {
@@ -67,11 +67,12 @@ inline std::vector<FamilyShape> fidelityShapes() {
             list.push_back({"cylinder", shapes::cappedCylinder(a, b, r), r});
             list.back().shape.name += std::string(" ") + "xyz"[axis];
         }
-    const dvec3 boxes[4][2] = {{{12, 11, 10}, {9, 8, 7}}, {{5, 6, 7}, {3, 4, 5}}, {{4, 4, 4}, {1, 1, 1}}, {{10, 10, 10}, {6, 1, 3}}};
+    const dvec3 boxes[4][2] = {
+        {{12, 11, 10}, {9, 8, 7}}, {{5, 6, 7}, {3, 4, 5}}, {{4, 4, 4}, {1, 1, 1}}, {{10, 10, 10}, {6, 1, 3}}};
     for (const auto &b : boxes) {
         list.push_back({"box", shapes::box(b[0], b[1]), 2.0 * std::min({b[1].x, b[1].y, b[1].z})});
-        list.back().shape.name += " " + std::to_string(int(2 * b[1].x)) + "x" + std::to_string(int(2 * b[1].y)) +
-                                  "x" + std::to_string(int(2 * b[1].z));
+        list.back().shape.name += " " + std::to_string(int(2 * b[1].x)) + "x" + std::to_string(int(2 * b[1].y)) + "x" +
+                                  std::to_string(int(2 * b[1].z));
     }
     return list;
 }
@@ -84,9 +85,9 @@ struct Row {
 
 struct Options {
     size_t samples = 200000;
-    bool taubin = true;       // when vcglib is available
-    bool otherMeshLab = true; // HC Laplacian and TwoStep, when vcglib is available
-    bool vtk = true;          // when VTK is available
+    bool taubin = true;        // when vcglib is available
+    bool otherMeshLab = true;  // HC Laplacian and TwoStep, when vcglib is available
+    bool vtk = true;           // when VTK is available
 };
 
 inline constexpr const char kConstrainedMethod[] = "constrained";
@@ -107,7 +108,8 @@ inline std::vector<Row> compare(const shapes::Shape &shape, const Options &optio
     for (size_t q = 0; q <= quadCount; ++q)
         offsets[q] = uint32_t(4 * q);
     std::vector<uint32_t> triangles(3 * countFanTriangles({nullptr, 0, offsets.data(), nullptr, quadCount}));
-    triangulatePolygons({nullptr, surface.positions.size(), offsets.data(), surface.quads.data(), quadCount}, triangles.data(), nullptr);
+    triangulatePolygons({nullptr, surface.positions.size(), offsets.data(), surface.quads.data(), quadCount},
+                        triangles.data(), nullptr);
 
     std::vector<Row> rows;
     auto measure = [&](const char *method, const std::vector<glm::vec3> &positions) {
@@ -137,8 +139,8 @@ inline std::vector<Row> compare(const shapes::Shape &shape, const Options &optio
 #ifdef VOXELFAIR_HAVE_VTK
     if (options.vtk) {
         const vtksinc::TriangleMesh vtk = vtksinc::smoothLikeVtk(volume);
-        rows.push_back({shape.name, kVtkMethod, shapes::measureSurfaceError(vtk.positions, vtk.triangles, shape,
-                                                                           options.samples)});
+        rows.push_back({shape.name, kVtkMethod,
+                        shapes::measureSurfaceError(vtk.positions, vtk.triangles, shape, options.samples)});
     }
 #endif
 

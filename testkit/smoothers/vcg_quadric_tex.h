@@ -35,7 +35,8 @@ class Face : public vcg::Face<UsedTypes, vcg::face::VertexRef, vcg::face::Normal
 class Mesh : public vcg::tri::TriMesh<std::vector<Vertex>, std::vector<Face>> {};
 
 using VertexPair = vcg::tri::BasicVertexPair<Vertex>;
-class Collapse : public vcg::tri::TriEdgeCollapseQuadricTex<Mesh, VertexPair, Collapse, vcg::tri::QuadricTexHelper<Mesh>> {
+class Collapse
+    : public vcg::tri::TriEdgeCollapseQuadricTex<Mesh, VertexPair, Collapse, vcg::tri::QuadricTexHelper<Mesh>> {
 public:
     using Base = vcg::tri::TriEdgeCollapseQuadricTex<Mesh, VertexPair, Collapse, vcg::tri::QuadricTexHelper<Mesh>>;
     Collapse(const VertexPair &p, int i, vcg::BaseParameterClass *pp) : Base(p, i, pp) {}
@@ -54,7 +55,8 @@ inline TexturedMesh decimate(const std::vector<glm::vec3> &positions, const std:
                              const std::vector<glm::vec2> &wedgeUv, double share) {
     Mesh m;
     auto vi = vcg::tri::Allocator<Mesh>::AddVertices(m, positions.size());
-    for (const glm::vec3 &p : positions) (vi++)->P() = vcg::Point3f(p.x, p.y, p.z);
+    for (const glm::vec3 &p : positions)
+        (vi++)->P() = vcg::Point3f(p.x, p.y, p.z);
     auto fi = vcg::tri::Allocator<Mesh>::AddFaces(m, triangles.size() / 3);
     for (size_t t = 0; t + 2 < triangles.size(); t += 3, ++fi)
         for (int k = 0; k < 3; ++k) {
@@ -103,14 +105,16 @@ inline TexturedMesh decimate(const std::vector<glm::vec3> &positions, const std:
     TexturedMesh out;
     std::vector<uint32_t> index(m.vert.size(), 0);
     for (size_t v = 0; v < m.vert.size(); ++v) {
-        if (m.vert[v].IsD()) continue;
+        if (m.vert[v].IsD())
+            continue;
         index[v] = uint32_t(out.positions.size());
         const vcg::Point3f &p = m.vert[v].cP(), &n = m.vert[v].cN();
         out.positions.emplace_back(p[0], p[1], p[2]);
         out.normals.emplace_back(n[0], n[1], n[2]);
     }
     for (const Face &f : m.face) {
-        if (f.IsD()) continue;
+        if (f.IsD())
+            continue;
         for (int k = 0; k < 3; ++k) {
             out.triangles.push_back(index[vcg::tri::Index(m, f.cV(k))]);
             out.wedgeUv.emplace_back(f.cWT(k).U(), f.cWT(k).V());

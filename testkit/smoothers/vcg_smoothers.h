@@ -34,8 +34,8 @@ struct UsedTypes : vcg::UsedTypes<vcg::Use<Vertex>::AsVertexType, vcg::Use<Face>
 // The components the three filters need (float like MeshLab's CMeshO).
 class Vertex : public vcg::Vertex<UsedTypes, vcg::vertex::Coord3f, vcg::vertex::Normal3f, vcg::vertex::VFAdj,
                                   vcg::vertex::Mark, vcg::vertex::BitFlags> {};
-class Face : public vcg::Face<UsedTypes, vcg::face::VertexRef, vcg::face::Normal3f, vcg::face::VFAdj,
-                              vcg::face::Mark, vcg::face::BitFlags> {};
+class Face : public vcg::Face<UsedTypes, vcg::face::VertexRef, vcg::face::Normal3f, vcg::face::VFAdj, vcg::face::Mark,
+                              vcg::face::BitFlags> {};
 class Mesh : public vcg::tri::TriMesh<std::vector<Vertex>, std::vector<Face>> {};
 
 inline void build(Mesh &mesh, const std::vector<glm::vec3> &positions, const std::vector<uint32_t> &triangles) {

@@ -50,8 +50,8 @@ inline void taubinLikeMeshLab(Mesh &mesh, int steps = 10, float lambda = 0.5f, f
 }
 
 // Smooths `positions` of the triangle mesh in place.
-inline void taubinLikeMeshLab(std::vector<glm::vec3> &positions, const std::vector<uint32_t> &triangles,
-                              int steps = 10, float lambda = 0.5f, float mu = -0.53f) {
+inline void taubinLikeMeshLab(std::vector<glm::vec3> &positions, const std::vector<uint32_t> &triangles, int steps = 10,
+                              float lambda = 0.5f, float mu = -0.53f) {
     Mesh mesh;
     build(mesh, positions, triangles);
     taubinLikeMeshLab(mesh, steps, lambda, mu);

@@ -55,8 +55,8 @@ Outcome checkModel(const pipeline::Model &model) {
     std::printf("  %-22s %7zu faces %5zu charts (%6.1f/kface) %5dx%-5d %6.2f texels/voxel coverage %5.1f%% crisp "
                 "%zu/%zu, %zu separated\n",
                 model.name.c_str(), view.faceCount, atlas.charts.chartCount(), o.chartsPerKiloFace, atlas.layout.width,
-                atlas.layout.height, atlas.layout.texelsPerUnit * mesh.voxelSize, 100 * o.coverage,
-                fid.nearestMatches, fid.samples, atlas.charts.separatedFaces);
+                atlas.layout.height, atlas.layout.texelsPerUnit * mesh.voxelSize, 100 * o.coverage, fid.nearestMatches,
+                fid.samples, atlas.charts.separatedFaces);
     return o;
 }
 
@@ -126,8 +126,8 @@ TEST(AtlasModels, GeneratedFamiliesAreCrispWithoutOverlaps) {
         // A thin plate (1 to 2 voxels) at a random orientation.
         const glm::dvec3 half(shapes::uniformIn(random, 6, 14), shapes::uniformIn(random, 5, 12),
                               shapes::uniformIn(random, 0.55, 1.1));
-        const shapes::Shape plate = shapes::atOffset(
-            shapes::orientedBox("plate", half, shapes::randomRotation(random)), shapes::randomFraction(random));
+        const shapes::Shape plate = shapes::atOffset(shapes::orientedBox("plate", half, shapes::randomRotation(random)),
+                                                     shapes::randomFraction(random));
         coverage.push_back(checkModel(*pipeline::volumeModel("thin plate " + std::to_string(i),
                                                              shapes::voxelize(plate, pixelArt(uint32_t(i))), palette))
                                .coverage);
@@ -141,24 +141,24 @@ TEST(AtlasModels, GeneratedFamiliesAreCrispWithoutOverlaps) {
         sliver.boundsMin = glm::min(a, b) - radius;
         sliver.boundsMax = glm::max(a, b) + radius;
         sliver = shapes::atOffset(sliver, shapes::randomFraction(random));
-        coverage.push_back(checkModel(*pipeline::volumeModel("diagonal sliver " + std::to_string(i),
-                                                             shapes::voxelize(sliver, pixelArt(uint32_t(10 + i))),
-                                                             palette))
-                               .coverage);
+        coverage.push_back(
+            checkModel(*pipeline::volumeModel("diagonal sliver " + std::to_string(i),
+                                              shapes::voxelize(sliver, pixelArt(uint32_t(10 + i))), palette))
+                .coverage);
         // Many small parts: 40 spheres and boxes of 1 to 3 voxels, each its own part.
         std::vector<VoxelVolume> parts;
         for (int k = 0; k < 40; ++k) {
             const double s = shapes::uniformIn(random, 0.8, 2.5);
             const shapes::Shape part =
                 k % 2 ? shapes::atOffset(shapes::sphere(glm::dvec3(s + 1), s), shapes::randomFraction(random))
-                      : shapes::atOffset(shapes::orientedBox("box", glm::dvec3(s, 0.8 * s, 0.6 * s),
-                                                             shapes::randomRotation(random)),
-                                         shapes::randomFraction(random));
+                      : shapes::atOffset(
+                            shapes::orientedBox("box", glm::dvec3(s, 0.8 * s, 0.6 * s), shapes::randomRotation(random)),
+                            shapes::randomFraction(random));
             parts.push_back(shapes::voxelize(part, pixelArt(uint32_t(100 * i + k))));
         }
-        coverage.push_back(checkModel(*pipeline::volumesModel("small parts " + std::to_string(i), std::move(parts),
-                                                              {}, palette))
-                               .coverage);
+        coverage.push_back(
+            checkModel(*pipeline::volumesModel("small parts " + std::to_string(i), std::move(parts), {}, palette))
+                .coverage);
     }
     std::printf("coverage: median %.1f%% over %zu generated models\n", 100 * median(coverage), coverage.size());
 }

@@ -337,7 +337,9 @@ TEST(Charts, GivenNormalsDriveTheConeButNeverFoldAFace) {
     // cones, yet the geometric test keeps every face within the stretch bound.
     for (size_t f = 0; f < normals.size(); ++f) {
         const glm::dvec3 n = geometricNormal(sphere, f);
-        const int axis = std::abs(n.x) >= std::max(std::abs(n.y), std::abs(n.z)) ? 0 : std::abs(n.y) >= std::abs(n.z) ? 1 : 2;
+        const int axis = std::abs(n.x) >= std::max(std::abs(n.y), std::abs(n.z)) ? 0
+                         : std::abs(n.y) >= std::abs(n.z)                        ? 1
+                                                                                 : 2;
         glm::vec3 snapped(0.0f);
         snapped[axis] = n[axis] > 0 ? 1.0f : -1.0f;
         normals[f] = std::abs(n[axis]) >= 0.75 ? snapped : glm::vec3(n);
@@ -583,7 +585,8 @@ TEST(BadInput, EmptyInvalidAndImpossibleRequestsGiveMessagesNotCrashes) {
     EXPECT_NE(atlas.message().find("999"), std::string::npos) << atlas.message();
 
     const AtlasCharts charts = computeCharts(box.view());
-    for (float density : {0.0f, -1.0f, std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {
+    for (float density :
+         {0.0f, -1.0f, std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {
         PackOptions options;
         options.texelsPerUnit = density;
         const AtlasLayout layout = packCharts(charts, options);

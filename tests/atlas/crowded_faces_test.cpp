@@ -31,8 +31,8 @@ TestMesh paperFaired(TestMesh m, int passes = 1) {
     LanczosFairingOptions options;
     options.passes = passes;
     options.voxelSize = 1.0f;
-    const FairingReport report =
-        fairModifiedLanczos({m.positions.data(), m.positions.size(), offsets.data(), indices.data(), quads}, nullptr, options);
+    const FairingReport report = fairModifiedLanczos(
+        {m.positions.data(), m.positions.size(), offsets.data(), indices.data(), quads}, nullptr, options);
     EXPECT_EQ(report.status, FairingStatus::Ok) << report.message;
     m.name += " paper" + std::to_string(passes);
     return m;
@@ -266,7 +266,8 @@ TEST(CrowdedFaces, APartShrunkToOnePercentKeepsEveryVoxelWithItsTexelScale) {
     EXPECT_LT(atlas.charts.separatedFaces, single.charts.separatedFaces);
     for (size_t c = 0; c < atlas.charts.chartCount(); ++c)
         for (uint32_t i = atlas.charts.chartFirstFace[c]; i < atlas.charts.chartFirstFace[c + 1]; ++i)
-            EXPECT_EQ(scale[atlas.charts.chartFaces[i]], scale[atlas.charts.chartFaces[atlas.charts.chartFirstFace[c]]]);
+            EXPECT_EQ(scale[atlas.charts.chartFaces[i]],
+                      scale[atlas.charts.chartFaces[atlas.charts.chartFirstFace[c]]]);
     // Stretch against each face's own density: the usual bounds.
     const AtlasMeasures m = measureAtlas(view, atlas.charts, atlas.layout);
     EXPECT_EQ(m.overlappingChartTexels, 0u);

@@ -14,7 +14,9 @@ using namespace voxelfair;
 TEST(AttributesFaceNormals, BoxQuadsPointOutOfTheSolid) {
     const shapes::QuadMesh box = shapes::boxLattice(3, 2, 4);
     std::vector<glm::vec3> normals(box.quadCount());
-    ASSERT_NO_THROW(computePolygonNormals({box.positions.data(), box.positions.size(), box.offsets.data(), box.indices.data(), box.quadCount()}, normals.data()));
+    ASSERT_NO_THROW(computePolygonNormals(
+        {box.positions.data(), box.positions.size(), box.offsets.data(), box.indices.data(), box.quadCount()},
+        normals.data()));
     const glm::vec3 centre(1.5f, 1.0f, 2.0f);
     for (size_t q = 0; q < box.quadCount(); ++q) {
         glm::vec3 mid(0.0f);

@@ -13,7 +13,8 @@ TEST(AttributesTriangulate, QuadsSplitAlongTheFixedDiagonalAC) {
     const std::vector<uint32_t> indices = {0, 1, 2, 3, 4, 5, 6, 7, 8, 0, 1, 2, 3, 4};
     ASSERT_EQ(countFanTriangles({nullptr, 0, offsets.data(), nullptr, 4}), 2u + 3u + 0u + 1u);
     std::vector<uint32_t> triangles(3 * 6), toPolygon(6);
-    ASSERT_NO_THROW(triangulatePolygons({nullptr, 9, offsets.data(), indices.data(), 4}, triangles.data(), toPolygon.data()));
+    ASSERT_NO_THROW(
+        triangulatePolygons({nullptr, 9, offsets.data(), indices.data(), 4}, triangles.data(), toPolygon.data()));
     EXPECT_EQ(triangles, (std::vector<uint32_t>{0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7, 4, 7, 8, 2, 3, 4}));
     EXPECT_EQ(toPolygon, (std::vector<uint32_t>{0, 0, 1, 1, 1, 3}));
 }

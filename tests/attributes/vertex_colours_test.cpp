@@ -38,7 +38,8 @@ TEST(AttributesVertexColours, MeanOverAdjacentPolygonsNotTriangles) {
     for (uint32_t p : toPolygon)
         triangleColours.push_back(faceColours[p]);
     std::vector<glm::vec4> perTriangle(7);
-    computeVertexColours({nullptr, 7, triangleOffsets.data(), triangles.data(), 4, triangleColours.data()}, perTriangle.data());
+    computeVertexColours({nullptr, 7, triangleOffsets.data(), triangles.data(), 4, triangleColours.data()},
+                         perTriangle.data());
     EXPECT_NEAR(perTriangle[2].x, 2.0f / 3.0f, 1e-6f);
 }
 

@@ -29,7 +29,8 @@ std::vector<glm::vec3> fanNormal(const std::vector<glm::vec3> &faceNormals, cons
         offsets.push_back(uint32_t(indices.size()));
     }
     std::vector<glm::vec3> normals(faceNormals.size() + 2);  // + one isolated vertex
-    EXPECT_NO_THROW(computeVertexNormals({nullptr, normals.size(), offsets.data(), indices.data(), faceNormals.size()}, faceNormals.data(), normals.data(), o));
+    EXPECT_NO_THROW(computeVertexNormals({nullptr, normals.size(), offsets.data(), indices.data(), faceNormals.size()},
+                                         faceNormals.data(), normals.data(), o));
     return normals;
 }
 
@@ -58,10 +59,10 @@ TEST(AttributesVertexNormals, ToleranceMergesOnlyNearlyIdenticalDirections) {
 
 TEST(AttributesVertexNormals, ZeroFacesIgnoredCancellingAndIsolatedGiveZero) {
     const std::vector<glm::vec3> n = fanNormal({glm::vec3(0, 0, 1), glm::vec3(0.0f), glm::vec3(0, 0, -1)});
-    EXPECT_EQ(n[0], glm::vec3(0.0f));      // +z and -z cancel
+    EXPECT_EQ(n[0], glm::vec3(0.0f));  // +z and -z cancel
     EXPECT_EQ(n[1], glm::vec3(0, 0, 1));
-    EXPECT_EQ(n[2], glm::vec3(0.0f));      // its only face is degenerate
-    EXPECT_EQ(n[4], glm::vec3(0.0f));      // isolated
+    EXPECT_EQ(n[2], glm::vec3(0.0f));  // its only face is degenerate
+    EXPECT_EQ(n[4], glm::vec3(0.0f));  // isolated
 }
 
 // A 1 x 2 x 3 box made of six single quads, split into triangles along a-c: at a corner the
@@ -73,13 +74,18 @@ TEST(AttributesVertexNormals, TriangulatedBoxCornersAreExactDiagonals) {
         p *= glm::vec3(1.0f, 2.0f, 3.0f);
     const size_t triangleCount = countFanTriangles({nullptr, 0, box.offsets.data(), nullptr, box.quadCount()});
     std::vector<uint32_t> triangles(3 * triangleCount), offsets(triangleCount + 1);
-    ASSERT_NO_THROW(triangulatePolygons({nullptr, box.positions.size(), box.offsets.data(), box.indices.data(), box.quadCount()}, triangles.data(), nullptr));
+    ASSERT_NO_THROW(
+        triangulatePolygons({nullptr, box.positions.size(), box.offsets.data(), box.indices.data(), box.quadCount()},
+                            triangles.data(), nullptr));
     for (size_t t = 0; t <= triangleCount; ++t)
         offsets[t] = uint32_t(3 * t);
     std::vector<glm::vec3> faceNormals(triangleCount), distinct(8), plain(8);
-    ASSERT_NO_THROW(computePolygonNormals({box.positions.data(), 8, offsets.data(), triangles.data(), triangleCount}, faceNormals.data()));
-    ASSERT_NO_THROW(computeVertexNormals({nullptr, 8, offsets.data(), triangles.data(), triangleCount}, faceNormals.data(), distinct.data()));
-    computeVertexNormals({nullptr, 8, offsets.data(), triangles.data(), triangleCount}, faceNormals.data(), plain.data(), kPlainMean);
+    ASSERT_NO_THROW(computePolygonNormals({box.positions.data(), 8, offsets.data(), triangles.data(), triangleCount},
+                                          faceNormals.data()));
+    ASSERT_NO_THROW(computeVertexNormals({nullptr, 8, offsets.data(), triangles.data(), triangleCount},
+                                         faceNormals.data(), distinct.data()));
+    computeVertexNormals({nullptr, 8, offsets.data(), triangles.data(), triangleCount}, faceNormals.data(),
+                         plain.data(), kPlainMean);
     const glm::vec3 centre(0.5f, 1.0f, 1.5f);
     float worstPlain = 0.0f;
     for (int v = 0; v < 8; ++v) {

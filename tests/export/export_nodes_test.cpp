@@ -25,8 +25,9 @@ TEST(VoxExportNodes, KeyframedTransformsBecomeFramesAtTheModelPivot) {
         for (int f = 0; f < frames; ++f) {
             const glm::vec3 t(int(rng() % 41) - 20, int(rng() % 41) - 20, int(rng() % 41) - 20);
             moves.push_back(t);
-            keys.push_back({{"_f", std::to_string(f)},
-                            {"_t", std::to_string(int(t.x)) + " " + std::to_string(int(t.y)) + " " + std::to_string(int(t.z))}});
+            keys.push_back(
+                {{"_f", std::to_string(f)},
+                 {"_t", std::to_string(int(t.x)) + " " + std::to_string(int(t.y)) + " " + std::to_string(int(t.z))}});
         }
         const Bytes bytes = VoxWriter()
                                 .model(sx, sy, 3, {{0, 0, 0, 1}})
@@ -87,7 +88,8 @@ TEST(UnitScene, FilesBecomeATreeWithTheTurretOffsetAlongPlusX) {
         const ExportNode &n = unit.nodes.nodes[size_t(node)];
         ASSERT_EQ(n.frames.size(), 3u);
         const float offset = part >= 2 ? 10.0f : 0.0f;
-        for (size_t f = 0; f < 3; ++f) EXPECT_FLOAT_EQ(n.frames[f][3].x, offset + float(f + part % 2));
+        for (size_t f = 0; f < 3; ++f)
+            EXPECT_FLOAT_EQ(n.frames[f][3].x, offset + float(f + part % 2));
         // The part's voxels are placed in the node's frame: toModel = world * (voxel -> section),
         // voxel (0,0,0) at the section's minBounds.
         const glm::vec3 minBounds = files[part / 2].model.sections[part % 2].minBounds;

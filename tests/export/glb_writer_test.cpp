@@ -22,8 +22,8 @@ tinygltf::Model load(const std::vector<uint8_t> &glb) {
     tinygltf::Model model;
     tinygltf::TinyGLTF loader;
     // The image bytes are compared as they are; no decoding.
-    loader.SetImageLoader([](tinygltf::Image *, const int, std::string *, std::string *, int, int, const unsigned char *,
-                             int, void *) { return true; },
+    loader.SetImageLoader([](tinygltf::Image *, const int, std::string *, std::string *, int, int,
+                             const unsigned char *, int, void *) { return true; },
                           nullptr);
     std::string error, warning;
     const bool ok = loader.LoadBinaryFromMemory(&model, &error, &warning, glb.data(), unsigned(glb.size()));
@@ -34,10 +34,13 @@ tinygltf::Model load(const std::vector<uint8_t> &glb) {
 
 glm::mat4 localMatrix(const tinygltf::Node &n) {
     glm::mat4 m(1.0f);
-    if (!n.translation.empty()) m = glm::translate(m, glm::vec3(n.translation[0], n.translation[1], n.translation[2]));
+    if (!n.translation.empty())
+        m = glm::translate(m, glm::vec3(n.translation[0], n.translation[1], n.translation[2]));
     if (!n.rotation.empty())
-        m *= glm::mat4_cast(glm::quat(float(n.rotation[3]), float(n.rotation[0]), float(n.rotation[1]), float(n.rotation[2])));
-    if (!n.scale.empty()) m = glm::scale(m, glm::vec3(n.scale[0], n.scale[1], n.scale[2]));
+        m *= glm::mat4_cast(
+            glm::quat(float(n.rotation[3]), float(n.rotation[0]), float(n.rotation[1]), float(n.rotation[2])));
+    if (!n.scale.empty())
+        m = glm::scale(m, glm::vec3(n.scale[0], n.scale[1], n.scale[2]));
     return m;
 }
 
@@ -46,7 +49,8 @@ std::vector<T> read(const tinygltf::Model &model, int accessorIndex) {
     const tinygltf::Accessor &a = model.accessors[size_t(accessorIndex)];
     const tinygltf::BufferView &v = model.bufferViews[size_t(a.bufferView)];
     std::vector<T> out(a.count);
-    std::memcpy(out.data(), model.buffers[size_t(v.buffer)].data.data() + v.byteOffset + a.byteOffset, a.count * sizeof(T));
+    std::memcpy(out.data(), model.buffers[size_t(v.buffer)].data.data() + v.byteOffset + a.byteOffset,
+                a.count * sizeof(T));
     return out;
 }
 
@@ -72,7 +76,8 @@ Generated generate(std::mt19937 &rng, size_t frames) {
         node.name = "node" + std::to_string(i);
         node.parent = i == 0 ? -1 : int(rng() % unsigned(i + 1)) - 1;
         node.world = randomRigid(rng, 20.0f);
-        for (size_t f = 0; f < frames; ++f) node.frames.push_back(randomRigid(rng, 20.0f));
+        for (size_t f = 0; f < frames; ++f)
+            node.frames.push_back(randomRigid(rng, 20.0f));
         g.scene.nodes.push_back(node);
         std::uniform_real_distribution<float> u(-10.0f, 10.0f);
         for (int t = 0; t < 3; ++t) {
@@ -126,7 +131,8 @@ TEST(GlbWriter, GeneratedTreesPutEveryVertexWhereTheModelHadIt) {
                 const glm::vec3 n = glm::normalize(glm::mat3(world[i]) * normals[indices[k]]);
                 EXPECT_GT(glm::dot(n, axes * g.mesh.normals[source]), 0.9999f);
                 EXPECT_NEAR(glm::length(normals[indices[k]]), 1.0f, 1e-5f);
-                EXPECT_EQ(uvs[indices[k]], glm::vec2(g.mesh.cornerUvs[9 * i + k].x, 1.0f - g.mesh.cornerUvs[9 * i + k].y));
+                EXPECT_EQ(uvs[indices[k]],
+                          glm::vec2(g.mesh.cornerUvs[9 * i + k].x, 1.0f - g.mesh.cornerUvs[9 * i + k].y));
             }
         }
     }
@@ -179,9 +185,11 @@ TEST(GlbWriter, AnimationSamplesEveryFrame) {
         EXPECT_FLOAT_EQ(times[1], 1.0f / 15.0f);
         // Each frame's local TRS composes back to the frame's world transform.
         for (const tinygltf::AnimationChannel &channel : a.channels) {
-            if (channel.target_path != "rotation") continue;
+            if (channel.target_path != "rotation")
+                continue;
             const std::vector<glm::vec4> q = read<glm::vec4>(model, a.samplers[size_t(channel.sampler)].output);
-            for (const glm::vec4 &r : q) EXPECT_NEAR(glm::length(r), 1.0f, 1e-5f);
+            for (const glm::vec4 &r : q)
+                EXPECT_NEAR(glm::length(r), 1.0f, 1e-5f);
         }
     }
 }
@@ -206,7 +214,8 @@ TEST(GlbWriter, CornersWeldUnlessTheirUvsDiffer) {
         const int n = 2 + int(rng() % 12), seam = 1 + int(rng() % unsigned(n - 1));
         GlbMesh mesh;
         for (int y = 0; y <= n; ++y)
-            for (int x = 0; x <= n; ++x) mesh.positions.push_back(glm::vec3(x, y, 0));
+            for (int x = 0; x <= n; ++x)
+                mesh.positions.push_back(glm::vec3(x, y, 0));
         const auto at = [&](int x, int y) { return uint32_t(y * (n + 1) + x); };
         const auto uv = [&](int x, int y, int quadX) {
             return glm::vec2(float(x) / float(n) + (x == seam && quadX >= seam ? 0.5f : 0.0f), float(y) / float(n));

@@ -22,17 +22,18 @@ struct NamedGrid {
 
 // What the mesh checks measured, for the case-specific expectations.
 struct MeshFacts {
-    long long euler = 0;         // V - E + F
-    size_t components = 0;       // connected through shared edges
-    size_t latticePoints = 0;    // distinct vertex positions
-    long long sixVolume = 0;     // six times the signed volume (divergence theorem)
+    long long euler = 0;       // V - E + F
+    size_t components = 0;     // connected through shared edges
+    size_t latticePoints = 0;  // distinct vertex positions
+    long long sixVolume = 0;   // six times the signed volume (divergence theorem)
 };
 
 class DisjointSets {
 public:
     explicit DisjointSets(size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), size_t(0)); }
     size_t find(size_t a) {
-        while (parent_[a] != a) a = parent_[a] = parent_[parent_[a]];
+        while (parent_[a] != a)
+            a = parent_[a] = parent_[parent_[a]];
         return a;
     }
     void unite(size_t a, size_t b) { parent_[find(a)] = find(b); }
@@ -59,8 +60,10 @@ long long det(const Point &a, const Point &b, const Point &c) {
 Face faceOfQuad(const Point q[4]) {
     Point e[4];
     for (int k = 0; k < 4; ++k)
-        for (int i = 0; i < 3; ++i) e[k][i] = q[(k + 1) % 4][i] - q[k][i];
-    for (int k = 0; k < 4; ++k) EXPECT_EQ(std::abs(e[k][0]) + std::abs(e[k][1]) + std::abs(e[k][2]), 1) << "side " << k;
+        for (int i = 0; i < 3; ++i)
+            e[k][i] = q[(k + 1) % 4][i] - q[k][i];
+    for (int k = 0; k < 4; ++k)
+        EXPECT_EQ(std::abs(e[k][0]) + std::abs(e[k][1]) + std::abs(e[k][2]), 1) << "side " << k;
     for (int i = 0; i < 3; ++i) {
         EXPECT_EQ(e[2][i], -e[0][i]);
         EXPECT_EQ(e[3][i], -e[1][i]);
@@ -68,12 +71,15 @@ Face faceOfQuad(const Point q[4]) {
     const Point n = {e[0][1] * e[1][2] - e[0][2] * e[1][1], e[0][2] * e[1][0] - e[0][0] * e[1][2],
                      e[0][0] * e[1][1] - e[0][1] * e[1][0]};
     int axis = 0;
-    while (axis < 2 && n[axis] == 0) ++axis;
+    while (axis < 2 && n[axis] == 0)
+        ++axis;
     EXPECT_EQ(std::abs(n[axis]), 1);
     Face face;
-    for (int i = 0; i < 3; ++i) face[i] = int(std::min({q[0][i], q[1][i], q[2][i], q[3][i]}));
+    for (int i = 0; i < 3; ++i)
+        face[i] = int(std::min({q[0][i], q[1][i], q[2][i], q[3][i]}));
     const bool positive = n[axis] > 0;
-    if (positive) --face[axis];  // the solid voxel is behind the outward normal
+    if (positive)
+        --face[axis];  // the solid voxel is behind the outward normal
     face[3] = 2 * axis + positive;
     return face;
 }
@@ -84,28 +90,33 @@ MeshFacts checkSurface(const ReferenceSolid &ref, const ReferenceSurface &expect
     const size_t quadCount = s.quadCount(), vertexCount = s.positions.size();
     EXPECT_EQ(quadCount, expected.faces.size()) << "one quad per exposed voxel face";
     EXPECT_EQ(s.quads.size(), 4 * quadCount);
-    if (s.quads.size() != 4 * quadCount) return facts;
+    if (s.quads.size() != 4 * quadCount)
+        return facts;
     for (uint32_t v : s.quads) {
         EXPECT_LT(v, vertexCount);
-        if (v >= vertexCount) return facts;
+        if (v >= vertexCount)
+            return facts;
     }
 
     std::vector<Point> points(vertexCount);
     std::set<Point> distinct;
-    for (size_t v = 0; v < vertexCount; ++v) distinct.insert(points[v] = latticePoint(s.positions[v]));
+    for (size_t v = 0; v < vertexCount; ++v)
+        distinct.insert(points[v] = latticePoint(s.positions[v]));
     facts.latticePoints = distinct.size();
 
     // Every quad covers a distinct exposed face and carries its voxel's payload.
     std::set<Face> covered;
     const uint32_t *quads = s.quads.data();
     for (size_t i = 0; i < quadCount; ++i) {
-        const Point q[4] = {points[quads[4 * i]], points[quads[4 * i + 1]], points[quads[4 * i + 2]], points[quads[4 * i + 3]]};
+        const Point q[4] = {points[quads[4 * i]], points[quads[4 * i + 1]], points[quads[4 * i + 2]],
+                            points[quads[4 * i + 3]]};
         const Face f = faceOfQuad(q);
         EXPECT_TRUE(covered.insert(f).second) << "face covered twice";
         EXPECT_TRUE(expected.faces.count(f)) << "quad " << i << " is not an exposed face (or faces inwards)";
         // Cavities are closed, so every quad bounds one of the original voxels.
         EXPECT_TRUE(ref.grid.at(f[0], f[1], f[2]));
-        if (!ref.grid.at(f[0], f[1], f[2])) continue;
+        if (!ref.grid.at(f[0], f[1], f[2]))
+            continue;
         const Voxel want = ref.grid.payload[ref.grid.index(f[0], f[1], f[2])];
         EXPECT_EQ(s.quadVoxels[i].colour, want.colour) << "quad " << i;
         EXPECT_EQ(s.quadVoxels[i].normal, want.normal) << "quad " << i;
@@ -137,14 +148,17 @@ MeshFacts checkSurface(const ReferenceSolid &ref, const ReferenceSurface &expect
     size_t unused = 0, multiFan = 0;
     for (size_t c = 0; c < 4 * quadCount; ++c) {
         size_t &fan = fanOf[quads[c]];
-        if (fan == SIZE_MAX) fan = corners.find(c);
+        if (fan == SIZE_MAX)
+            fan = corners.find(c);
         multiFan += fan != corners.find(c);
     }
-    for (size_t fan : fanOf) unused += fan == SIZE_MAX;
+    for (size_t fan : fanOf)
+        unused += fan == SIZE_MAX;
     EXPECT_EQ(unused, 0u) << "unused vertices";
     EXPECT_EQ(multiFan, 0u) << "vertices whose quads form several fans";
 
-    for (size_t i = 0; i < quadCount; ++i) facts.components += surfaces.find(i) == i;
+    for (size_t i = 0; i < quadCount; ++i)
+        facts.components += surfaces.find(i) == i;
     facts.euler = (long long)vertexCount - (long long)edgeUses.size() + (long long)quadCount;
     return facts;
 }
@@ -167,7 +181,8 @@ MeshFacts checkExtraction(const DenseGrid &grid, BoundarySurface *result = nullp
         EXPECT_EQ(facts.euler, 2 * (long long)facts.components) << "a sphere per component";
         EXPECT_EQ(facts.components, expected.solidComponents);
     }
-    if (result) *result = s;
+    if (result)
+        *result = s;
     return facts;
 }
 
@@ -180,7 +195,8 @@ void checkAll(const std::vector<NamedGrid> &family) {
 
 DenseGrid withVoxels(int sx, int sy, int sz, std::initializer_list<std::array<int, 3>> voxels) {
     DenseGrid g(sx, sy, sz);
-    for (const auto &v : voxels) g.set(v[0], v[1], v[2]);
+    for (const auto &v : voxels)
+        g.set(v[0], v[1], v[2]);
     return g;
 }
 
@@ -188,7 +204,8 @@ DenseGrid hollowBox(int side) {
     DenseGrid g = box(side, side, side);
     for (int z = 1; z < side - 1; ++z)
         for (int y = 1; y < side - 1; ++y)
-            for (int x = 1; x < side - 1; ++x) g.set(x, y, z, false);
+            for (int x = 1; x < side - 1; ++x)
+                g.set(x, y, z, false);
     return g;
 }
 
@@ -198,7 +215,8 @@ DenseGrid ring(int side, int hole, int height) {
     const int h0 = (side - hole) / 2;
     for (int z = 0; z < height; ++z)
         for (int y = h0; y < h0 + hole; ++y)
-            for (int x = h0; x < h0 + hole; ++x) g.set(x, y, z, false);
+            for (int x = h0; x < h0 + hole; ++x)
+                g.set(x, y, z, false);
     return g;
 }
 
@@ -236,15 +254,18 @@ TEST(BoundarySurface, LShapesAndChains) {
     checkAll({
         {"L in a plane", withVoxels(3, 3, 1, {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {0, 2, 0}})},
         {"L across planes", withVoxels(2, 3, 3, {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {1, 2, 0}, {1, 2, 1}, {1, 2, 2}})},
-        {"thick L", [] {
+        {"thick L",
+         [] {
              DenseGrid g = box(6, 6, 3);
              for (int z = 0; z < 3; ++z)
                  for (int y = 3; y < 6; ++y)
-                     for (int x = 3; x < 6; ++x) g.set(x, y, z, false);
+                     for (int x = 3; x < 6; ++x)
+                         g.set(x, y, z, false);
              return g;
          }()},
         // A C-shaped chain whose ends touch only along an edge: not a ring (faces only connect).
-        {"chain closed by an edge", withVoxels(1, 4, 4, {{0, 1, 1}, {0, 1, 0}, {0, 2, 0}, {0, 3, 0}, {0, 3, 1}, {0, 3, 2}, {0, 2, 2}})},
+        {"chain closed by an edge",
+         withVoxels(1, 4, 4, {{0, 1, 1}, {0, 1, 0}, {0, 2, 0}, {0, 3, 0}, {0, 3, 1}, {0, 3, 2}, {0, 2, 2}})},
     });
 }
 
@@ -322,7 +343,8 @@ TEST(BoundarySurface, Checkerboards) {
         for (int z = 0; z < sz; ++z)
             for (int y = 0; y < sy; ++y)
                 for (int x = 0; x < sx; ++x)
-                    if ((x + y + z) % 2 == parity) g.set(x, y, z);
+                    if ((x + y + z) % 2 == parity)
+                        g.set(x, y, z);
         return g;
     };
     // In 3D the inner empty cells are walled in by their six solid neighbours and get filled.
@@ -343,14 +365,15 @@ TEST(BoundarySurface, AllConfigurationsOfATwoByTwoByTwoBlock) {
         SCOPED_TRACE(testing::Message() << "config " << config);
         DenseGrid g(2, 2, 2);
         for (int cell = 0; cell < 8; ++cell)
-            if (config >> cell & 1) g.set(cell & 1, cell >> 1 & 1, cell >> 2);
+            if (config >> cell & 1)
+                g.set(cell & 1, cell >> 1 & 1, cell >> 2);
         checkExtraction(g);
     }
 }
 
 TEST(BoundarySurface, RingsHaveEulerCharacteristicZero) {
-    for (const NamedGrid &g : std::vector<NamedGrid>{{"3x3x1", ring(3, 1, 1)}, {"5x5x2 hole 3", ring(5, 3, 2)},
-                                                     {"6x6x3 hole 2", ring(6, 2, 3)}}) {
+    for (const NamedGrid &g : std::vector<NamedGrid>{
+             {"3x3x1", ring(3, 1, 1)}, {"5x5x2 hole 3", ring(5, 3, 2)}, {"6x6x3 hole 2", ring(6, 2, 3)}}) {
         SCOPED_TRACE(g.name);
         const MeshFacts f = checkExtraction(g.grid);
         EXPECT_EQ(f.euler, 0);
@@ -418,5 +441,6 @@ TEST(BoundarySurface, WorksInTheLargestVolumeWithoutTouchingItsBoundingBox) {
     EXPECT_EQ(s.quadCount(), 150u);
     EXPECT_EQ(s.positions.size(), 152u);
     EXPECT_EQ(s.stats.cavityVoxelsFilled, 27u);
-    for (const glm::vec3 &p : s.positions) EXPECT_EQ(std::max({p.x, p.y, p.z}) <= float(kMaxVolumeSide), true);
+    for (const glm::vec3 &p : s.positions)
+        EXPECT_EQ(std::max({p.x, p.y, p.z}) <= float(kMaxVolumeSide), true);
 }

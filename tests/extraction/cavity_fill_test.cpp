@@ -16,7 +16,8 @@ DenseGrid hollowBox(int side, int wall = 1) {
     DenseGrid g = box(side, side, side);
     for (int z = wall; z < side - wall; ++z)
         for (int y = wall; y < side - wall; ++y)
-            for (int x = wall; x < side - wall; ++x) g.set(x, y, z, false);
+            for (int x = wall; x < side - wall; ++x)
+                g.set(x, y, z, false);
     return g;
 }
 
@@ -56,7 +57,8 @@ void expectMatchesReference(const DenseGrid &grid) {
             for (int x = 0; x < grid.sizeX; ++x) {
                 const Voxel *v = out.find(x, y, z);
                 ASSERT_EQ(v != nullptr, ref.at(x, y, z)) << x << "," << y << "," << z;
-                if (!v) continue;
+                if (!v)
+                    continue;
                 const Voxel expected = grid.at(x, y, z) ? grid.payload[grid.index(x, y, z)] : kFill;
                 EXPECT_EQ(v->colour, expected.colour);
                 EXPECT_EQ(v->normal, expected.normal);
@@ -94,8 +96,9 @@ TEST(FillEnclosedCavities, FillsNestedCavitiesAroundAnIsland) {
     DenseGrid g = hollowBox(9);
     for (int z = 3; z < 6; ++z)
         for (int y = 3; y < 6; ++y)
-            for (int x = 3; x < 6; ++x) g.set(x, y, z);  // a solid core floating inside
-    g.set(4, 4, 4, false);                                 // with a cavity of its own
+            for (int x = 3; x < 6; ++x)
+                g.set(x, y, z);  // a solid core floating inside
+    g.set(4, 4, 4, false);       // with a cavity of its own
     size_t filled = 0;
     fillEnclosedCavities(g.toVolume(), &filled);
     EXPECT_EQ(filled, 7u * 7 * 7 - 26);
@@ -107,9 +110,11 @@ TEST(FillEnclosedCavities, CavityReachingTheOutsideThroughAWindingTunnelStaysOpe
     DenseGrid g = hollowBox(7);
     for (int z = 1; z < 6; ++z)
         for (int y = 1; y < 6; ++y)
-            for (int x = 1; x < 6; ++x) g.set(x, y, z);  // solid, then carve:
+            for (int x = 1; x < 6; ++x)
+                g.set(x, y, z);  // solid, then carve:
     const int path[][3] = {{3, 3, 3}, {3, 3, 2}, {3, 2, 2}, {2, 2, 2}, {2, 2, 1}, {2, 1, 1}, {1, 1, 1}, {0, 1, 1}};
-    for (const auto &p : path) g.set(p[0], p[1], p[2], false);
+    for (const auto &p : path)
+        g.set(p[0], p[1], p[2], false);
     size_t filled = 99;
     fillEnclosedCavities(g.toVolume(), &filled);
     EXPECT_EQ(filled, 0u);
@@ -121,7 +126,8 @@ TEST(FillEnclosedCavities, CavityReachingTheOutsideThroughAWindingTunnelStaysOpe
 TEST(FillEnclosedCavities, GapsBelowAndAboveTheRunsAndInBorderColumnsAreExterior) {
     DenseGrid cup = hollowBox(5);
     for (int y = 1; y < 4; ++y)
-        for (int x = 1; x < 4; ++x) cup.set(x, y, 4, false);  // open at the top
+        for (int x = 1; x < 4; ++x)
+            cup.set(x, y, 4, false);  // open at the top
     size_t filled = 99;
     fillEnclosedCavities(cup.toVolume(), &filled);
     EXPECT_EQ(filled, 0u);
@@ -136,7 +142,8 @@ TEST(FillEnclosedCavities, GapsBelowAndAboveTheRunsAndInBorderColumnsAreExterior
 TEST(FillEnclosedCavities, MatchesADenseFloodFillOnRandomGrids) {
     uint32_t seed = 1;
     for (const double density : {0.5, 0.65, 0.8})
-        for (const auto &size : {std::array<int, 3>{6, 6, 6}, std::array<int, 3>{9, 5, 12}, std::array<int, 3>{16, 16, 3}})
+        for (const auto &size :
+             {std::array<int, 3>{6, 6, 6}, std::array<int, 3>{9, 5, 12}, std::array<int, 3>{16, 16, 3}})
             for (int i = 0; i < 6; ++i, ++seed) {
                 SCOPED_TRACE(testing::Message() << "seed " << seed << " density " << density);
                 expectMatchesReference(randomGrid(size[0], size[1], size[2], density, seed));

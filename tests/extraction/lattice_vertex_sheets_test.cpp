@@ -16,7 +16,8 @@ bool slotHasQuad(int config, int slot) {
 
 int quadCount(int config) {
     int n = 0;
-    for (int s = 0; s < kLatticeQuadSlots; ++s) n += slotHasQuad(config, s);
+    for (int s = 0; s < kLatticeQuadSlots; ++s)
+        n += slotHasQuad(config, s);
     return n;
 }
 
@@ -31,7 +32,8 @@ void expectWellFormed(int config, const LatticeVertexSheets &sheets) {
         ++quadsPerSheet[sheets.sheetOfSlot[s]];
     }
     // A closed fan around a lattice point has at least three quads.
-    for (int n : quadsPerSheet) EXPECT_GE(n, 3);
+    for (int n : quadsPerSheet)
+        EXPECT_GE(n, 3);
 }
 
 }  // namespace

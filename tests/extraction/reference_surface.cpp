@@ -37,7 +37,8 @@ bool joinedBehind(const std::array<bool, 4> &ring, const std::array<bool, 4> &be
 // made of octants (cells), quarter-planes between two solid cells and half-edges with four.
 size_t sheetsAround(const ReferenceSolid &s, const int p[3]) {
     bool solid[8];
-    for (int k = 0; k < 8; ++k) solid[k] = s.at(p[0] - 1 + (k & 1), p[1] - 1 + (k >> 1 & 1), p[2] - 1 + (k >> 2));
+    for (int k = 0; k < 8; ++k)
+        solid[k] = s.at(p[0] - 1 + (k & 1), p[1] - 1 + (k >> 1 & 1), p[2] - 1 + (k >> 2));
     long long cells = 0, shared = 0, fullHalfEdges = 0;
     int component[8];
     for (int k = 0; k < 8; ++k) {
@@ -45,13 +46,15 @@ size_t sheetsAround(const ReferenceSolid &s, const int p[3]) {
         component[k] = k;
     }
     auto find = [&](int k) {
-        while (component[k] != k) k = component[k];
+        while (component[k] != k)
+            k = component[k];
         return k;
     };
     for (int k = 0; k < 8; ++k)
         for (int axis = 0; axis < 3; ++axis) {
             const int n = k | 1 << axis;
-            if (n == k || !solid[k] || !solid[n]) continue;
+            if (n == k || !solid[k] || !solid[n])
+                continue;
             ++shared;
             component[find(k)] = find(n);
         }
@@ -59,11 +62,13 @@ size_t sheetsAround(const ReferenceSolid &s, const int p[3]) {
         for (int side = 0; side < 2; ++side) {
             bool all = true;
             for (int k = 0; k < 8; ++k)
-                if ((k >> axis & 1) == side) all = all && solid[k];
+                if ((k >> axis & 1) == side)
+                    all = all && solid[k];
             fullHalfEdges += all;
         }
     long long components = 0;
-    for (int k = 0; k < 8; ++k) components += solid[k] && find(k) == k;
+    for (int k = 0; k < 8; ++k)
+        components += solid[k] && find(k) == k;
     return size_t(2 * components - (cells - shared + fullHalfEdges));
 }
 
@@ -71,7 +76,8 @@ size_t sheetsAround(const ReferenceSolid &s, const int p[3]) {
 
 size_t ReferenceSolid::count() const {
     size_t n = 0;
-    for (uint8_t v : solid) n += v;
+    for (uint8_t v : solid)
+        n += v;
     return n;
 }
 
@@ -88,8 +94,10 @@ ReferenceSolid referenceSolid(const DenseGrid &grid) {
         queue.pop_front();
         for (const auto &d : kSteps) {
             const int x = c[0] + d[0], y = c[1] + d[1], z = c[2] + d[2];
-            if (x < 0 || y < 0 || z < 0 || x >= px || y >= py || z >= pz) continue;
-            if (outside[padded(x, y, z)] || grid.at(x - 1, y - 1, z - 1)) continue;
+            if (x < 0 || y < 0 || z < 0 || x >= px || y >= py || z >= pz)
+                continue;
+            if (outside[padded(x, y, z)] || grid.at(x - 1, y - 1, z - 1))
+                continue;
             outside[padded(x, y, z)] = 1;
             queue.push_back({x, y, z});
         }
@@ -112,10 +120,12 @@ ReferenceSurface referenceSurface(const ReferenceSolid &s) {
     for (int z = 0; z < g.sizeZ; ++z)
         for (int y = 0; y < g.sizeY; ++y)
             for (int x = 0; x < g.sizeX; ++x) {
-                if (!s.at(x, y, z)) continue;
+                if (!s.at(x, y, z))
+                    continue;
                 for (int d = 0; d < 6; ++d) {
                     const bool neighbour = s.at(x + kSteps[d][0], y + kSteps[d][1], z + kSteps[d][2]);
-                    if (!neighbour) r.faces.insert(Face{x, y, z, d});
+                    if (!neighbour)
+                        r.faces.insert(Face{x, y, z, d});
                     shared += neighbour;
                 }
             }
@@ -125,7 +135,8 @@ ReferenceSurface referenceSurface(const ReferenceSolid &s) {
             for (int x = 0; x <= g.sizeX; ++x) {
                 const int p[3] = {x, y, z};
                 bool all = true;
-                for (int k = 0; k < 8; ++k) all = all && s.at(x - 1 + (k & 1), y - 1 + (k >> 1 & 1), z - 1 + (k >> 2));
+                for (int k = 0; k < 8; ++k)
+                    all = all && s.at(x - 1 + (k & 1), y - 1 + (k >> 1 & 1), z - 1 + (k >> 2));
                 fullPoints += all;
                 const size_t sheets = sheetsAround(s, p);
                 r.vertices += sheets;
@@ -133,7 +144,8 @@ ReferenceSurface referenceSurface(const ReferenceSolid &s) {
                 for (int b = 0; b < 3; ++b) {
                     const auto ring = ringCells(s, p, b, p[b]);
                     fullEdges += ring[0] && ring[1] && ring[2] && ring[3];
-                    if (!diagonal(ring)) continue;
+                    if (!diagonal(ring))
+                        continue;
                     ++r.fourQuadEdges;
                     if (joinedBehind(ring, ringCells(s, p, b, p[b] - 1)) &&
                         joinedBehind(ring, ringCells(s, p, b, p[b] + 1))) {
@@ -148,7 +160,8 @@ ReferenceSurface referenceSurface(const ReferenceSolid &s) {
     for (int z = 0; z < g.sizeZ; ++z)
         for (int y = 0; y < g.sizeY; ++y)
             for (int x = 0; x < g.sizeX; ++x) {
-                if (!s.at(x, y, z) || seen[g.index(x, y, z)]) continue;
+                if (!s.at(x, y, z) || seen[g.index(x, y, z)])
+                    continue;
                 ++r.solidComponents;
                 std::deque<std::array<int, 3>> queue{{x, y, z}};
                 seen[g.index(x, y, z)] = 1;
@@ -157,7 +170,8 @@ ReferenceSurface referenceSurface(const ReferenceSolid &s) {
                     queue.pop_front();
                     for (const auto &d : kSteps) {
                         const int nx = c[0] + d[0], ny = c[1] + d[1], nz = c[2] + d[2];
-                        if (!s.at(nx, ny, nz) || seen[g.index(nx, ny, nz)]) continue;
+                        if (!s.at(nx, ny, nz) || seen[g.index(nx, ny, nz)])
+                            continue;
                         seen[g.index(nx, ny, nz)] = 1;
                         queue.push_back({nx, ny, nz});
                     }

@@ -23,9 +23,9 @@ using shapes::QuadMesh;
 
 namespace {
 
-ConstrainedFairingReport fair(QuadMesh &m, const uint8_t *selected = nullptr,
-                              const ConstrainedFairingOptions &o = {}) {
-    return fairConstrained({m.positions.data(), m.positions.size(), m.offsets.data(), m.indices.data(), m.quadCount()}, selected, o);
+ConstrainedFairingReport fair(QuadMesh &m, const uint8_t *selected = nullptr, const ConstrainedFairingOptions &o = {}) {
+    return fairConstrained({m.positions.data(), m.positions.size(), m.offsets.data(), m.indices.data(), m.quadCount()},
+                           selected, o);
 }
 
 // The boundary quads (section 4.2) of the voxels of an sx * sy * sz box where `solid` holds.
@@ -211,7 +211,10 @@ TEST(FairingConstrained, OpenAndTriangleMeshesKeepTheirFlatPartsAndBorders) {
         triangles.offsets.push_back(uint32_t(triangles.indices.size()));
     }
     faired = triangles;
-    const ConstrainedFairingReport t = fairConstrained({faired.positions.data(), faired.positions.size(), faired.offsets.data(), faired.indices.data(), faired.offsets.size() - 1}, nullptr);
+    const ConstrainedFairingReport t =
+        fairConstrained({faired.positions.data(), faired.positions.size(), faired.offsets.data(), faired.indices.data(),
+                         faired.offsets.size() - 1},
+                        nullptr);
     ASSERT_EQ(t.status, FairingStatus::Ok) << t.message;
     EXPECT_EQ(t.sharpEdges, 12u * 3u);
     EXPECT_EQ(faired.positions, triangles.positions);

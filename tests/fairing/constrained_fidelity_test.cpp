@@ -48,7 +48,7 @@ const comparison::Row *find(const std::vector<comparison::Row> &rows, const std:
 TEST_P(FairingConstrainedFidelity, MeetsTheGoalAndBeatsTheOtherSmoothers) {
     const comparison::FamilyShape &param = GetParam();
     comparison::Options options;
-    options.samples = 20000;  // RMS to about 0.5% (the tool uses 200000)
+    options.samples = 20000;       // RMS to about 0.5% (the tool uses 200000)
     options.otherMeshLab = false;  // (tools/compare_smoothing has them)
     const std::vector<comparison::Row> rows = comparison::compare(param.shape, options);
     for (const comparison::Row &row : rows)

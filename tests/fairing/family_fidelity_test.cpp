@@ -41,14 +41,10 @@ constexpr int kInstances = 4;
 // The bound asserted on every instance of a family (see the table above).
 double rmsBound(const shapes::Family &family) {
     switch (family.goal) {
-    case shapes::FamilyGoal::Curved:
-        return 0.075;
-    case shapes::FamilyGoal::Cylinder:
-        return 0.16;
-    case shapes::FamilyGoal::LatticeBox:
-        return 0.03;
-    case shapes::FamilyGoal::FlatAndEdges:
-        break;
+    case shapes::FamilyGoal::Curved: return 0.075;
+    case shapes::FamilyGoal::Cylinder: return 0.16;
+    case shapes::FamilyGoal::LatticeBox: return 0.03;
+    case shapes::FamilyGoal::FlatAndEdges: break;
     }
     // Measured worst of the first kInstances, plus about 10%; the goal is 0.10.
     static const std::map<std::string, double> measured = {
@@ -86,7 +82,8 @@ Measured measure(const shapes::Shape &shape) {
     for (size_t q = 0; q <= quadCount; ++q)
         offsets[q] = uint32_t(4 * q);
     std::vector<uint32_t> triangles(3 * countFanTriangles({nullptr, 0, offsets.data(), nullptr, quadCount}));
-    triangulatePolygons({nullptr, surface.positions.size(), offsets.data(), surface.quads.data(), quadCount}, triangles.data(), nullptr);
+    triangulatePolygons({nullptr, surface.positions.size(), offsets.data(), surface.quads.data(), quadCount},
+                        triangles.data(), nullptr);
     const size_t samples = 20000;
     Measured m;
     m.raw = shapes::measureSurfaceError(surface.positions, triangles, shape, samples);
@@ -172,7 +169,9 @@ TEST(FairingFamilies, PlaneStageFindsFlatFacesAndNoneOnSpheres) {
         for (size_t q = 0; q < offsets.size(); ++q)
             offsets[q] = uint32_t(4 * q);
         std::vector<glm::vec3> positions = surface.positions;
-        return fairConstrained({positions.data(), positions.size(), offsets.data(), surface.quads.data(), surface.quadCount()}, nullptr, options);
+        return fairConstrained(
+            {positions.data(), positions.size(), offsets.data(), surface.quads.data(), surface.quadCount()}, nullptr,
+            options);
     };
     size_t boxPlanes = 0;
     for (const shapes::FamilyShape &s : shapes::familyShapes(kInstances))
@@ -183,7 +182,8 @@ TEST(FairingFamilies, PlaneStageFindsFlatFacesAndNoneOnSpheres) {
         }
     EXPECT_GE(boxPlanes, size_t(2 * kInstances * 2));  // at least two faces a box on average
     for (double r : {6.3, 17.7}) {
-        const ConstrainedFairingReport report = run(shapes::sphere(glm::dvec3(r + 2.31, r + 2.17, r + 2.43), r), planes);
+        const ConstrainedFairingReport report =
+            run(shapes::sphere(glm::dvec3(r + 2.31, r + 2.17, r + 2.43), r), planes);
         EXPECT_EQ(report.planeRegions, 0u) << "sphere r" << r;
     }
     const shapes::Shape large = shapes::sphere(glm::dvec3(42.51, 42.37, 42.63), 40.2);
@@ -193,12 +193,16 @@ TEST(FairingFamilies, PlaneStageFindsFlatFacesAndNoneOnSpheres) {
         std::vector<uint32_t> offsets(surface.quadCount() + 1);
         for (size_t q = 0; q < offsets.size(); ++q)
             offsets[q] = uint32_t(4 * q);
-        std::vector<uint32_t> triangles(3 * countFanTriangles({nullptr, 0, offsets.data(), nullptr, surface.quadCount()}));
-        triangulatePolygons({nullptr, surface.positions.size(), offsets.data(), surface.quads.data(), surface.quadCount()}, triangles.data(), nullptr);
+        std::vector<uint32_t> triangles(3 *
+                                        countFanTriangles({nullptr, 0, offsets.data(), nullptr, surface.quadCount()}));
+        triangulatePolygons(
+            {nullptr, surface.positions.size(), offsets.data(), surface.quads.data(), surface.quadCount()},
+            triangles.data(), nullptr);
         std::vector<glm::vec3> positions = surface.positions;
         ConstrainedFairingOptions options;
         options.fitPlanes = withPlanes != 0;
-        fairConstrained({positions.data(), positions.size(), offsets.data(), surface.quads.data(), surface.quadCount()}, nullptr, options);
+        fairConstrained({positions.data(), positions.size(), offsets.data(), surface.quads.data(), surface.quadCount()},
+                        nullptr, options);
         rms[withPlanes] = shapes::measureSurfaceError(positions, triangles, large, 20000).rms;
     }
     EXPECT_LE(rms[1], rms[0] + 0.005) << "planes on a sphere of radius 40";

@@ -19,7 +19,8 @@ using shapes::QuadMesh;
 namespace {
 
 FairingReport fair(QuadMesh &m, const uint8_t *selected = nullptr, const LanczosFairingOptions &o = {}) {
-    return fairModifiedLanczos({m.positions.data(), m.positions.size(), m.offsets.data(), m.indices.data(), m.quadCount()}, selected, o);
+    return fairModifiedLanczos(
+        {m.positions.data(), m.positions.size(), m.offsets.data(), m.indices.data(), m.quadCount()}, selected, o);
 }
 
 void expectMove(const QuadMesh &before, const QuadMesh &after, glm::ivec3 at, glm::vec3 move, float scale = 1.0f) {
@@ -173,8 +174,8 @@ TEST(FairingLanczos, NonFiniteVerticesAreSkippedAndDoNotPoisonNeighbours) {
 TEST(FairingLanczos, CoincidentAndIsolatedVerticesStayFinite) {
     // Two quads sharing an edge; vertex 4 duplicates vertex 1 and is used too, vertex 6 is
     // unused; the last quad has all four corners at one point.
-    std::vector<glm::vec3> p = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {1, 0, 0}, {2, 0, 1}, {9, 9, 9},
-                                {5, 5, 5}, {5, 5, 5}, {5, 5, 5}, {5, 5, 5}};
+    std::vector<glm::vec3> p = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {1, 0, 0}, {2, 0, 1},
+                                {9, 9, 9}, {5, 5, 5}, {5, 5, 5}, {5, 5, 5}, {5, 5, 5}};
     const std::vector<uint32_t> offsets = {0, 4, 8, 12};
     const std::vector<uint32_t> indices = {0, 1, 2, 3, 4, 5, 2, 1, 7, 8, 9, 10};
     const FairingReport r = fairModifiedLanczos({p.data(), p.size(), offsets.data(), indices.data(), 3}, nullptr, {});
@@ -214,10 +215,10 @@ TEST(FairingLanczos, BadInputIsReportedAndLeavesPositionsUntouched) {
     EXPECT_EQ(m.positions, box.positions);
 
     EXPECT_EQ(fairModifiedLanczos({nullptr, 0, nullptr, nullptr, 0}, nullptr, {}).status, FairingStatus::NothingToDo);
-    EXPECT_THROW(fairModifiedLanczos({nullptr, box.positions.size(), box.offsets.data(), box.indices.data(),
-                                      box.quadCount()},
-                                     nullptr, {}),
-                 MeshError);
+    EXPECT_THROW(
+        fairModifiedLanczos({nullptr, box.positions.size(), box.offsets.data(), box.indices.data(), box.quadCount()},
+                            nullptr, {}),
+        MeshError);
     glm::vec3 lonely(1.0f);
     const uint32_t zero = 0;
     EXPECT_EQ(fairModifiedLanczos({&lonely, 1, &zero, nullptr, 0}, nullptr, {}).status, FairingStatus::NothingToDo);

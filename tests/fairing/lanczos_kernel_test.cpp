@@ -9,9 +9,10 @@ using namespace voxelfair;
 
 // doc/method.md §4: F as a function of the raw mean u, with d = (4/3) u.
 TEST(FairingLanczosKernel, MatchesTheAuthorsTable) {
-    const struct { double u, f; } table[] = {{0.05, 0.008}, {0.1, 0.032}, {0.25, 0.190}, {1.0 / 3.0, 0.320},
-                                             {0.5, 0.619},  {0.6, 0.793}, {0.75, 1.000}, {0.9, 1.118},
-                                             {1.0, 1.146}};
+    const struct {
+        double u, f;
+    } table[] = {{0.05, 0.008}, {0.1, 0.032},  {0.25, 0.190}, {1.0 / 3.0, 0.320}, {0.5, 0.619},
+                 {0.6, 0.793},  {0.75, 1.000}, {0.9, 1.118},  {1.0, 1.146}};
     for (const auto &row : table) {
         EXPECT_NEAR(lanczosDisplacementReference(4.0 / 3.0 * row.u), row.f, 5e-4) << "u = " << row.u;
         EXPECT_NEAR(lanczosDisplacement(float(4.0 / 3.0 * row.u)), row.f, 5e-4) << "u = " << row.u;
@@ -26,7 +27,8 @@ TEST(FairingLanczosKernel, OneSineFormAgreesWithReference) {
     double worst = 0.0;
     for (int i = -300000; i <= 300000; ++i) {
         const double d = i * 1e-5;
-        worst = std::max(worst, std::fabs(double(lanczosDisplacement(float(d))) - lanczosDisplacementReference(float(d))));
+        worst =
+            std::max(worst, std::fabs(double(lanczosDisplacement(float(d))) - lanczosDisplacementReference(float(d))));
     }
     EXPECT_LT(worst, 1e-6);
 }

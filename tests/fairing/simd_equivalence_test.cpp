@@ -21,10 +21,12 @@
 
 // Both variants, whichever of them the header made the default.
 namespace voxelfair::sse2 {
-ConstrainedFairingReport fairConstrained(const MutablePolygonMesh &, const uint8_t *, const ConstrainedFairingOptions &);
+ConstrainedFairingReport fairConstrained(const MutablePolygonMesh &, const uint8_t *,
+                                         const ConstrainedFairingOptions &);
 }
 namespace voxelfair::scalar {
-ConstrainedFairingReport fairConstrained(const MutablePolygonMesh &, const uint8_t *, const ConstrainedFairingOptions &);
+ConstrainedFairingReport fairConstrained(const MutablePolygonMesh &, const uint8_t *,
+                                         const ConstrainedFairingOptions &);
 }
 
 using namespace voxelfair;
@@ -114,8 +116,10 @@ TEST(FairingSimdEquivalence, VariantsAgreeWithinTolerance) {
                 const uint8_t *mask = selection ? selected.data() : nullptr;
                 std::vector<glm::vec3> simd = mesh.positions, scalar = mesh.positions;
                 const size_t polygons = mesh.offsets.size() - 1;
-                const ConstrainedFairingReport a = sse2::fairConstrained({simd.data(), simd.size(), mesh.offsets.data(), mesh.indices.data(), polygons}, mask, options);
-                const ConstrainedFairingReport b = scalar::fairConstrained({scalar.data(), scalar.size(), mesh.offsets.data(), mesh.indices.data(), polygons}, mask, options);
+                const ConstrainedFairingReport a = sse2::fairConstrained(
+                    {simd.data(), simd.size(), mesh.offsets.data(), mesh.indices.data(), polygons}, mask, options);
+                const ConstrainedFairingReport b = scalar::fairConstrained(
+                    {scalar.data(), scalar.size(), mesh.offsets.data(), mesh.indices.data(), polygons}, mask, options);
                 const std::string what = mesh.name + ", " + optionsName + (selection ? ", selection" : "");
                 ASSERT_EQ(a.status, FairingStatus::Ok) << what;
                 ASSERT_EQ(b.status, FairingStatus::Ok) << what;

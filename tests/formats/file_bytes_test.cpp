@@ -37,7 +37,8 @@ struct TempFile {
 
 TEST(FileBytes, ReadsTheWholeFile) {
     std::vector<uint8_t> bytes(200000);
-    for (size_t i = 0; i < bytes.size(); ++i) bytes[i] = uint8_t(i * 31 + 7);
+    for (size_t i = 0; i < bytes.size(); ++i)
+        bytes[i] = uint8_t(i * 31 + 7);
     const TempFile file(bytes);
     EXPECT_EQ(readFileBytes(file.path.string()), bytes);
     const TempFile empty({});

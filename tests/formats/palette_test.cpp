@@ -62,7 +62,8 @@ TEST(Palette, ReadsJascText) {
     EXPECT_EQ(p.colours[3], (Rgb{}));  // past the count: black
 
     std::string full = "JASC-PAL\n0100\n256\n";
-    for (int i = 0; i < 256; ++i) full += std::to_string(i) + " " + std::to_string(255 - i) + " 7\n";
+    for (int i = 0; i < 256; ++i)
+        full += std::to_string(i) + " " + std::to_string(255 - i) + " 7\n";
     const Palette q = readText(full);
     EXPECT_EQ(q.colours[255], (Rgb{255, 0, 7}));
     EXPECT_EQ(q.colours[100], (Rgb{100, 155, 7}));
@@ -117,6 +118,7 @@ TEST(Palette, DefaultPaletteFollowsItsRule) {
         EXPECT_TRUE(p.colours[size_t(k)].r == p.colours[size_t(k)].g &&
                     p.colours[size_t(k)].g == p.colours[size_t(k)].b);
     std::set<std::tuple<int, int, int>> distinct;
-    for (Rgb c : p.colours) distinct.emplace(c.r, c.g, c.b);
+    for (Rgb c : p.colours)
+        distinct.emplace(c.r, c.g, c.b);
     EXPECT_GT(distinct.size(), 240u);  // the ramps are told apart
 }

@@ -146,8 +146,8 @@ const std::vector<ModelFacts> kModels = {
 
 const fs::path kModelsDir = VOXELFAIR_MODELS_DIR;
 
-#define SKIP_WITHOUT_MODELS()                  \
-    if (!fs::is_directory(kModelsDir / "vxl")) \
+#define SKIP_WITHOUT_MODELS()                                                                                          \
+    if (!fs::is_directory(kModelsDir / "vxl"))                                                                         \
     GTEST_SKIP() << "shared models folder " << (kModelsDir / "vxl").string() << " is absent"
 
 std::vector<uint8_t> load(const fs::path &path) { return readFileBytes(path.string()); }
@@ -187,7 +187,8 @@ TEST_P(SharedVxlModel, LoadsWithTheMeasuredFacts) {
         EXPECT_EQ(section.minBounds, f.minBounds);
         EXPECT_EQ(section.maxBounds, f.maxBounds);
         const int maxNormal = section.normalType == 2 ? 35 : 243;
-        for (const Voxel &v : section.volume.voxels) ASSERT_LE(v.normal, maxNormal);
+        for (const Voxel &v : section.volume.voxels)
+            ASSERT_LE(v.normal, maxNormal);
     }
 
     const fs::path hvaPath = kModelsDir / "vxl" / (std::string(facts.name) + ".hva");
@@ -203,7 +204,8 @@ TEST_P(SharedVxlModel, LoadsWithTheMeasuredFacts) {
             for (int s = 0; s < hva.sectionCount(); ++s) {
                 const glm::mat4 m = sectionToModel(model.sections[size_t(s)], &hva.matrix(frame, s));
                 for (int c = 0; c < 4; ++c)
-                    for (int r = 0; r < 4; ++r) ASSERT_TRUE(std::isfinite(m[c][r]));
+                    for (int r = 0; r < 4; ++r)
+                        ASSERT_TRUE(std::isfinite(m[c][r]));
             }
     }
 }
@@ -214,7 +216,8 @@ TEST_P(SharedVxlModel, RoundTripsThroughTheWriter) {
     const std::vector<uint8_t> bytes = writeVxl(model);
     const VxlModel back = readVxl(bytes.data(), bytes.size());
     // Clamped normals are written clamped, so nothing is clamped on the way back.
-    for (VxlSection &s : model.sections) s.clampedNormals = 0;
+    for (VxlSection &s : model.sections)
+        s.clampedNormals = 0;
     EXPECT_EQ(fixtures::firstDifference(model, back), "");
 }
 
@@ -222,14 +225,16 @@ INSTANTIATE_TEST_SUITE_P(Models, SharedVxlModel, ::testing::ValuesIn(kModels),
                          [](const ::testing::TestParamInfo<ModelFacts> &info) {
                              std::string name = info.param.name;
                              for (char &c : name)
-                                 if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                                 if (!std::isalnum(static_cast<unsigned char>(c)))
+                                     c = '_';
                              return name;
                          });
 
 TEST(SharedVxlModels, TheTableCoversEveryFile) {
     SKIP_WITHOUT_MODELS();
     std::set<std::string> inTable;
-    for (const ModelFacts &m : kModels) inTable.insert(m.name);
+    for (const ModelFacts &m : kModels)
+        inTable.insert(m.name);
     for (const fs::directory_entry &e : fs::directory_iterator(kModelsDir / "vxl"))
         if (e.path().extension() == ".vxl") {
             EXPECT_TRUE(inTable.count(e.path().stem().string())) << e.path();
@@ -285,7 +290,8 @@ TEST_P(SharedPalette, HouseColourVoxelsOfEveryModelAreRed) {
         const VxlModel model = loadVxl(facts.name);
         // Without a chosen palette a non-zero embedded one is used: its house entries are whatever
         // the author's editor held, so only the external and default palettes are checked.
-        if (GetParam().empty() && !model.embeddedPalette.allZero()) continue;
+        if (GetParam().empty() && !model.embeddedPalette.allZero())
+            continue;
         for (const VxlSection &s : model.sections)
             for (const Voxel &v : s.volume.voxels)
                 if (v.colour >= model.remapFirst && v.colour <= model.remapLast) {

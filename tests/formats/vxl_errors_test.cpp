@@ -58,7 +58,8 @@ std::vector<uint8_t> smallWrittenFile() {
 // Success when reading `bytes` throws a FormatError whose message contains every part.
 ::testing::AssertionResult errorMentions(const std::vector<uint8_t> &bytes, std::initializer_list<const char *> parts) {
     const std::string message = errorOf(bytes);
-    if (message.empty()) return ::testing::AssertionFailure() << "no FormatError";
+    if (message.empty())
+        return ::testing::AssertionFailure() << "no FormatError";
     for (const char *part : parts)
         if (message.find(part) == std::string::npos)
             return ::testing::AssertionFailure() << "\"" << message << "\" does not mention \"" << part << "\"";

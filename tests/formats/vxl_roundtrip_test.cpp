@@ -57,14 +57,10 @@ TEST(VxlRoundTrip, ColumnsOf255Voxels) {
     // The tallest column the format can hold: full, gaps at both ends, single voxels at the extremes.
     VxlModel model = makeModel({makeSection("tall", volumeWhere(4, 1, 255, [](int x, int, int z) {
                                                 switch (x) {
-                                                    case 0:
-                                                        return true;
-                                                    case 1:
-                                                        return z > 0 && z < 254;
-                                                    case 2:
-                                                        return z == 0 || z == 254;
-                                                    default:
-                                                        return z % 2 == 1;
+                                                case 0: return true;
+                                                case 1: return z > 0 && z < 254;
+                                                case 2: return z == 0 || z == 254;
+                                                default: return z % 2 == 1;
                                                 }
                                             }))});
     expectRoundTrip(model);

@@ -14,7 +14,8 @@ std::atomic<size_t> peak{0};
 
 void *allocate(size_t size) noexcept {
     void *p = std::malloc(size == 0 ? 1 : size);
-    if (p == nullptr) return nullptr;
+    if (p == nullptr)
+        return nullptr;
     // The block's real size, so that delete (often unsized) subtracts exactly what was added.
     const size_t bytes = malloc_usable_size(p);
     const size_t now = live.fetch_add(bytes, std::memory_order_relaxed) + bytes;
@@ -25,7 +26,8 @@ void *allocate(size_t size) noexcept {
 }
 
 void release(void *p) noexcept {
-    if (p == nullptr) return;
+    if (p == nullptr)
+        return;
     live.fetch_sub(malloc_usable_size(p), std::memory_order_relaxed);
     std::free(p);
 }
@@ -50,7 +52,8 @@ size_t AllocationMeter::peakBytes() const {
 // The replaceable global allocation functions ([new.delete]); the aligned forms keep their
 // defaults (nothing under test over-aligns).
 void *operator new(size_t size) {
-    if (void *p = voxelfair::test::allocate(size)) return p;
+    if (void *p = voxelfair::test::allocate(size))
+        return p;
     throw std::bad_alloc();
 }
 void *operator new[](size_t size) { return operator new(size); }

@@ -51,16 +51,19 @@ TEST(HostileInput, EveryReaderRejectsTheOtherFormats) {
     size_t tried = 0;
     for (size_t f = 0; f < 4; ++f) {
         const Bytes bytes = loadModel(files[f]);
-        if (bytes.empty()) continue;
+        if (bytes.empty())
+            continue;
         for (size_t r = 0; r < 4; ++r) {
-            if (r == f) continue;
+            if (r == f)
+                continue;
             const Attempt a = attempt(kReaders[r].read, bytes);
             EXPECT_TRUE(survived(a, kSmallHeap, bytes.size())) << kReaders[r].name << " on " << files[f];
             EXPECT_TRUE(rejectedWith(a, {kReaders[r].wrongFormat})) << kReaders[r].name << " on " << files[f];
             ++tried;
         }
     }
-    if (tried == 0) GTEST_SKIP() << "shared models folder " << modelsDir().string() << " is absent";
+    if (tried == 0)
+        GTEST_SKIP() << "shared models folder " << modelsDir().string() << " is absent";
 }
 
 TEST(HostileInput, TheMagicFollowedByConstantBytes) {

@@ -20,7 +20,8 @@ VoxelVolume checkerboardSlab(int side) {
     VoxelVolumeBuilder builder(side, side, 1);
     for (int y = 0; y < side; ++y)
         for (int x = 0; x < side; ++x)
-            if ((x + y) % 2 == 0) builder.add(x, y, 0, Voxel{uint8_t(1 + x % 255), 0});
+            if ((x + y) % 2 == 0)
+                builder.add(x, y, 0, Voxel{uint8_t(1 + x % 255), 0});
     return builder.finish();
 }
 

@@ -55,13 +55,15 @@ TEST(HostileHva, RandomBitFlips) {
             record.add(a);
             ASSERT_TRUE(survived(a, kHvaHeap, b.size())) << "seed " << seed << ", variant " << i;
             if (!a.accepted) {
-                ASSERT_TRUE(rejectedWithAnyOf(a, {"does not match", "no frames", "no sections", "not a finite number"}));
+                ASSERT_TRUE(
+                    rejectedWithAnyOf(a, {"does not match", "no frames", "no sections", "not a finite number"}));
             }
         }
     };
     sweep(fixtureFile(), 11, 2000);
     const Bytes hmec = loadModel("vxl/hmec.hva");
-    if (!hmec.empty()) sweep(hmec, 12, 3000);
+    if (!hmec.empty())
+        sweep(hmec, 12, 3000);
     record.print("bit-flipped .hva files");
     EXPECT_GT(record.accepted, 0u);
     EXPECT_LT(record.accepted, record.inputs);
@@ -71,8 +73,8 @@ TEST(HostileHva, CountsWhoseProductsOverflow) {
     const Bytes base = fixtureFile();
     // Pairs whose size formula 24 + 16 s + 48 f s wraps in 32 or 64 bits, or nearly matches.
     const std::pair<uint32_t, uint32_t> counts[] = {
-        {0xFFFFFFFFu, 0xFFFFFFFFu}, {0x80000000u, 2},  {1, 0x80000000u}, {0x55555556u, 3},
-        {3, 0x0AAAAAABu},           {0x10000000u, 0x10000000u}, {4, 2}, {3, 3}};
+        {0xFFFFFFFFu, 0xFFFFFFFFu}, {0x80000000u, 2},           {1, 0x80000000u}, {0x55555556u, 3},
+        {3, 0x0AAAAAABu},           {0x10000000u, 0x10000000u}, {4, 2},           {3, 3}};
     for (const auto &[frames, sections] : counts) {
         Bytes b = base;
         patch32(b, 16, frames);

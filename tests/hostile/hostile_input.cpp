@@ -28,19 +28,23 @@ Attempt attempt(Reader read, const Bytes &bytes) {
 }
 
 ::testing::AssertionResult survived(const Attempt &a, const HeapBound &bound, size_t inputSize, double maxSeconds) {
-    if (!a.accepted && a.error.empty()) return ::testing::AssertionFailure() << "FormatError with an empty message";
+    if (!a.accepted && a.error.empty())
+        return ::testing::AssertionFailure() << "FormatError with an empty message";
     if (a.error.size() > kMaxMessageLength)
-        return ::testing::AssertionFailure() << "message of " << a.error.size() << " characters: " << a.error.substr(0, 200);
+        return ::testing::AssertionFailure()
+               << "message of " << a.error.size() << " characters: " << a.error.substr(0, 200);
     if (a.peakBytes > bound.bytesFor(inputSize))
-        return ::testing::AssertionFailure() << "peak heap " << a.peakBytes << " bytes for " << inputSize
-                                             << " input bytes, over the bound " << bound.bytesFor(inputSize)
-                                             << (a.accepted ? " (accepted)" : " (rejected: " + a.error + ")");
-    if (a.seconds > maxSeconds) return ::testing::AssertionFailure() << "took " << a.seconds << " s";
+        return ::testing::AssertionFailure()
+               << "peak heap " << a.peakBytes << " bytes for " << inputSize << " input bytes, over the bound "
+               << bound.bytesFor(inputSize) << (a.accepted ? " (accepted)" : " (rejected: " + a.error + ")");
+    if (a.seconds > maxSeconds)
+        return ::testing::AssertionFailure() << "took " << a.seconds << " s";
     return ::testing::AssertionSuccess();
 }
 
 ::testing::AssertionResult rejectedWith(const Attempt &a, std::initializer_list<const char *> parts) {
-    if (a.accepted) return ::testing::AssertionFailure() << "accepted";
+    if (a.accepted)
+        return ::testing::AssertionFailure() << "accepted";
     for (const char *part : parts)
         if (a.error.find(part) == std::string::npos)
             return ::testing::AssertionFailure() << "\"" << a.error << "\" does not mention \"" << part << "\"";
@@ -48,9 +52,11 @@ Attempt attempt(Reader read, const Bytes &bytes) {
 }
 
 ::testing::AssertionResult rejectedWithAnyOf(const Attempt &a, std::initializer_list<const char *> anyOf) {
-    if (a.accepted) return ::testing::AssertionFailure() << "accepted";
+    if (a.accepted)
+        return ::testing::AssertionFailure() << "accepted";
     for (const char *part : anyOf)
-        if (a.error.find(part) != std::string::npos) return ::testing::AssertionSuccess();
+        if (a.error.find(part) != std::string::npos)
+            return ::testing::AssertionSuccess();
     return ::testing::AssertionFailure() << "\"" << a.error << "\" names none of the expected problems";
 }
 
@@ -67,8 +73,8 @@ void SweepRecord::print(const char *what) const {
                 what, inputs, accepted, maxPeakBytes, maxSeconds, longestMessage);
 }
 
-void sweepTruncations(Reader read, const Bytes &file, const HeapBound &bound,
-                      std::initializer_list<const char *> anyOf, const char *what) {
+void sweepTruncations(Reader read, const Bytes &file, const HeapBound &bound, std::initializer_list<const char *> anyOf,
+                      const char *what) {
     SweepRecord record;
     for (size_t n = 0; n < file.size(); ++n) {
         const Bytes cut(file.begin(), file.begin() + std::ptrdiff_t(n));
@@ -84,12 +90,14 @@ std::filesystem::path modelsDir() { return VOXELFAIR_MODELS_DIR; }
 
 Bytes loadModel(const std::string &relativePath) {
     const std::filesystem::path path = modelsDir() / relativePath;
-    if (!std::filesystem::is_regular_file(path)) return {};
+    if (!std::filesystem::is_regular_file(path))
+        return {};
     return readFileBytes(path.string());
 }
 
 Bytes flipBits(Bytes bytes, std::mt19937 &rng, int flips) {
-    if (bytes.empty()) return bytes;
+    if (bytes.empty())
+        return bytes;
     std::uniform_int_distribution<size_t> bit(0, 8 * bytes.size() - 1);
     for (int i = 0; i < flips; ++i) {
         const size_t b = bit(rng);
@@ -99,12 +107,14 @@ Bytes flipBits(Bytes bytes, std::mt19937 &rng, int flips) {
 }
 
 void patch32(Bytes &bytes, size_t offset, uint32_t value) {
-    for (int i = 0; i < 4; ++i) bytes.at(offset + size_t(i)) = uint8_t(value >> (8 * i));
+    for (int i = 0; i < 4; ++i)
+        bytes.at(offset + size_t(i)) = uint8_t(value >> (8 * i));
 }
 
 uint32_t load32(const Bytes &bytes, size_t offset) {
     uint32_t v = 0;
-    for (int i = 0; i < 4; ++i) v |= uint32_t(bytes.at(offset + size_t(i))) << (8 * i);
+    for (int i = 0; i < 4; ++i)
+        v |= uint32_t(bytes.at(offset + size_t(i))) << (8 * i);
     return v;
 }
 

@@ -30,7 +30,7 @@ struct HeapBound {
 
 struct Attempt {
     bool accepted = false;
-    std::string error;   // the FormatError's message when not accepted
+    std::string error;  // the FormatError's message when not accepted
     size_t peakBytes = 0;
     double seconds = 0;
 };
@@ -67,8 +67,8 @@ struct SweepRecord {
 
 // Every proper prefix of `file` (a cut at each byte): each must survive within `bound` and be
 // rejected with a message containing one of `anyOf`. Prints the record as `what`.
-void sweepTruncations(Reader read, const Bytes &file, const HeapBound &bound,
-                      std::initializer_list<const char *> anyOf, const char *what);
+void sweepTruncations(Reader read, const Bytes &file, const HeapBound &bound, std::initializer_list<const char *> anyOf,
+                      const char *what);
 
 // A file of the shared models folder (VOXELFAIR_MODELS_DIR), or empty when it is absent; tests
 // then skip with a message naming the folder.
@@ -84,7 +84,7 @@ uint32_t load32(const Bytes &bytes, size_t offset);
 }  // namespace voxelfair::test
 
 // Skips the test when the shared model is missing.
-#define VOXELFAIR_LOAD_MODEL_OR_SKIP(var, path)                                                            \
-    const ::voxelfair::test::Bytes var = ::voxelfair::test::loadModel(path);                            \
-    if (var.empty())                                                                                     \
-        GTEST_SKIP() << "shared model " << (::voxelfair::test::modelsDir() / (path)).string() << " is absent"
+#define VOXELFAIR_LOAD_MODEL_OR_SKIP(var, path)                                                                        \
+    const ::voxelfair::test::Bytes var = ::voxelfair::test::loadModel(path);                                           \
+    if (var.empty())                                                                                                   \
+    GTEST_SKIP() << "shared model " << (::voxelfair::test::modelsDir() / (path)).string() << " is absent"

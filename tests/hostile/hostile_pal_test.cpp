@@ -54,7 +54,8 @@ TEST(HostilePal, RandomBitFlips) {
         }
     };
     const Bytes pal = loadModel("pal/ts_unittem.pal");
-    if (!pal.empty()) sweep(pal, 21, 2000, "above the 6-bit maximum");
+    if (!pal.empty())
+        sweep(pal, 21, 2000, "above the 6-bit maximum");
     sweep(jascFile(), 22, 3000, "JASC-PAL palette");
     record.print("bit-flipped .pal files");
     EXPECT_GT(record.accepted, 0u);

@@ -35,7 +35,7 @@ constexpr HeapBound kVoxHeap{32, 4 * (kMaxVoxColumns + kMaxVoxModels) + (1 << 20
 // Reading and placing: each shape instance costs a VoxInstance and a PlacedVolume (doubled for
 // vector growth); a 4-byte child id can add one, doubling groups up to kMaxVoxInstances.
 constexpr size_t kInstanceBytes = 2 * (sizeof(VoxInstance) + sizeof(PlacedVolume));
-constexpr HeapBound kVoxPlaceHeap{kVoxHeap.perByte, kVoxHeap.fixed + kMaxVoxInstances * kInstanceBytes};
+constexpr HeapBound kVoxPlaceHeap{kVoxHeap.perByte, kVoxHeap.fixed + kMaxVoxInstances *kInstanceBytes};
 
 // Each chunk's header offset, id and the end of its parent, in file order.
 struct ChunkAt {
@@ -77,7 +77,8 @@ Bytes doublingGraph(int levels, const std::vector<VoxVoxel> &model) {
     VoxWriter w;
     w.model(8, 8, 8, model);
     w.transform(0, 1, {{}});
-    for (int i = 1; i <= levels; ++i) w.group(i, {i + 1, i + 1});
+    for (int i = 1; i <= levels; ++i)
+        w.group(i, {i + 1, i + 1});
     w.shape(levels + 1, 0);
     return w.bytes();
 }
@@ -86,7 +87,8 @@ std::vector<VoxVoxel> cube(int side) {
     std::vector<VoxVoxel> voxels;
     for (int z = 0; z < side; ++z)
         for (int y = 0; y < side; ++y)
-            for (int x = 0; x < side; ++x) voxels.push_back({uint8_t(x), uint8_t(y), uint8_t(z), 1});
+            for (int x = 0; x < side; ++x)
+                voxels.push_back({uint8_t(x), uint8_t(y), uint8_t(z), 1});
     return voxels;
 }
 
@@ -103,7 +105,8 @@ TEST(HostileVox, RandomBitFlips) {
         // Half the variants flip bits in chunk headers only (ids and sizes), the rest anywhere.
         std::vector<size_t> headerBytes;
         for (const ChunkAt &c : chunksOf(base))
-            for (size_t i = 0; i < 12; ++i) headerBytes.push_back(c.offset + i);
+            for (size_t i = 0; i < 12; ++i)
+                headerBytes.push_back(c.offset + i);
         std::mt19937 rng(seed);
         std::uniform_int_distribution<int> flips(1, 8);
         std::uniform_int_distribution<size_t> header(0, headerBytes.size() - 1);
@@ -112,7 +115,8 @@ TEST(HostileVox, RandomBitFlips) {
             if (i % 2 == 0) {
                 b = flipBits(std::move(b), rng, flips(rng));
             } else {
-                for (int f = flips(rng); f > 0; --f) b[headerBytes[header(rng)]] ^= uint8_t(1u << (rng() % 8));
+                for (int f = flips(rng); f > 0; --f)
+                    b[headerBytes[header(rng)]] ^= uint8_t(1u << (rng() % 8));
             }
             const Attempt a = attempt(readAndPlace, b);
             record.add(a);
@@ -121,8 +125,10 @@ TEST(HostileVox, RandomBitFlips) {
     };
     sweep(fixtureFile(), 31, 3000);
     const Bytes robo = loadModel("vox/robo.vox"), ontop = loadModel("vox/8ontop.vox");
-    if (!robo.empty()) sweep(robo, 32, 2000);
-    if (!ontop.empty()) sweep(ontop, 33, 500);
+    if (!robo.empty())
+        sweep(robo, 32, 2000);
+    if (!ontop.empty())
+        sweep(ontop, 33, 500);
     record.print("bit-flipped .vox files");
     EXPECT_GT(record.accepted, 0u);
     EXPECT_LT(record.accepted, record.inputs);
@@ -135,10 +141,8 @@ TEST(HostileVox, ChunkSizesPastTheirParent) {
     for (const ChunkAt &c : chunks) {
         const size_t content = load32(robo, c.offset + 4), children = load32(robo, c.offset + 8);
         const size_t room = c.parentEnd - (c.offset + 12);  // content + children may not exceed it
-        const std::pair<size_t, uint32_t> patches[] = {{4, uint32_t(room - children + 1)},
-                                                       {8, uint32_t(room - content + 1)},
-                                                       {4, 0xFFFFFFFFu},
-                                                       {8, 0x80000000u}};
+        const std::pair<size_t, uint32_t> patches[] = {
+            {4, uint32_t(room - children + 1)}, {8, uint32_t(room - content + 1)}, {4, 0xFFFFFFFFu}, {8, 0x80000000u}};
         for (const auto &[field, value] : patches) {
             Bytes b = robo;
             patch32(b, c.offset + field, value);
@@ -183,7 +187,8 @@ TEST(HostileVox, AbsurdCountsInEveryChunkKind) {
 TEST(HostileVox, LargestModelSizesStayWithinTheColumnLimit) {
     // Four empty 2048^3 models: 2^24 columns, the limit, from 184 bytes; a fifth is refused.
     VoxWriter w;
-    for (int i = 0; i < 4; ++i) w.model(kMaxVolumeSide, kMaxVolumeSide, kMaxVolumeSide, {});
+    for (int i = 0; i < 4; ++i)
+        w.model(kMaxVolumeSide, kMaxVolumeSide, kMaxVolumeSide, {});
     const Bytes four = w.bytes();
     const Attempt a = attempt(readOnly, four);
     EXPECT_TRUE(a.accepted) << a.error;
@@ -227,29 +232,32 @@ TEST(HostileVox, DenseStructuresStayWithinTheBound) {
         return w.bytes();
     };
     std::vector<std::pair<std::string, Bytes>> cases;
-    cases.emplace_back("transform keyframes", withGraph([](VoxWriter &w) {
-                           w.transform(0, 1, std::vector<VoxDict>(kItems)).shape(1, 0);
-                       }));
-    cases.emplace_back("empty dictionary entries", withGraph([](VoxWriter &w) {
-                           w.transform(0, 1, {{}}, VoxDict(kItems / 2)).shape(1, 0);
-                       }));
-    cases.emplace_back("group children", withGraph([](VoxWriter &w) {
-                           w.transform(0, 1, {{}}).group(1, std::vector<int>(kItems, 2)).transform(2, 3, {{}}).shape(3, 0);
-                       }));
+    cases.emplace_back("transform keyframes",
+                       withGraph([](VoxWriter &w) { w.transform(0, 1, std::vector<VoxDict>(kItems)).shape(1, 0); }));
+    cases.emplace_back("empty dictionary entries",
+                       withGraph([](VoxWriter &w) { w.transform(0, 1, {{}}, VoxDict(kItems / 2)).shape(1, 0); }));
+    cases.emplace_back(
+        "group children", withGraph([](VoxWriter &w) {
+            w.transform(0, 1, {{}}).group(1, std::vector<int>(kItems, 2)).transform(2, 3, {{}}).shape(3, 0);
+        }));
     cases.emplace_back("shape keyframes", withGraph([](VoxWriter &w) {
                            w.transform(0, 1, {{}}).shape(1, std::vector<std::pair<int, VoxDict>>(kItems / 2, {0, {}}));
                        }));
     cases.emplace_back("nodes", withGraph([](VoxWriter &w) {
                            std::vector<int> children;
-                           for (int i = 0; i < kItems / 16; ++i) children.push_back(2 + i);
+                           for (int i = 0; i < kItems / 16; ++i)
+                               children.push_back(2 + i);
                            w.transform(0, 1, {{}}).group(1, children);
-                           for (int child : children) w.group(child, {});
+                           for (int child : children)
+                               w.group(child, {});
                        }));
     cases.emplace_back("layers", withGraph([](VoxWriter &w) {
-                           for (int i = 0; i < kItems / 8; ++i) w.layer(i, {});
+                           for (int i = 0; i < kItems / 8; ++i)
+                               w.layer(i, {});
                        }));
     std::vector<VoxVoxel> voxels;
-    for (int i = 0; i < kItems; ++i) voxels.push_back({uint8_t(i % 256), uint8_t(i / 256 % 256), uint8_t(2 * (i / 65536)), 1});
+    for (int i = 0; i < kItems; ++i)
+        voxels.push_back({uint8_t(i % 256), uint8_t(i / 256 % 256), uint8_t(2 * (i / 65536)), 1});
     cases.emplace_back("scattered voxels", VoxWriter().model(256, 256, 8, voxels).bytes());
     for (const auto &[name, bytes] : cases) {
         const Attempt read = attempt(readOnly, bytes), placed = attempt(readAndPlace, bytes);

@@ -43,10 +43,10 @@ Layout layoutOf(const Bytes &bytes) {
 // A written two-section model, so that the sweeps run without the shared models too.
 Bytes fixtureFile() {
     using namespace voxelfair::fixtures;
-    return writeVxl(makeModel(
-        {makeSection("hull", volumeWhere(9, 7, 5, [](int x, int y, int z) { return (x * y + z) % 4 != 1; })),
-         makeSection("turret", volumeWhere(3, 4, 6, [](int x, int, int z) { return x != 1 || z % 2 == 0; }),
-                     VxlNormalType::TiberianSun)}));
+    return writeVxl(
+        makeModel({makeSection("hull", volumeWhere(9, 7, 5, [](int x, int y, int z) { return (x * y + z) % 4 != 1; })),
+                   makeSection("turret", volumeWhere(3, 4, 6, [](int x, int, int z) { return x != 1 || z % 2 == 0; }),
+                               VxlNormalType::TiberianSun)}));
 }
 
 void sweepBitFlips(const Bytes &base, uint32_t seed, int variants, SweepRecord &record) {
@@ -82,8 +82,10 @@ rawvxl::RawVxl sharedSpans(const Bytes &column, size_t sections) {
     RawVxl raw;
     const uint32_t start = column.empty() ? uint32_t(-1) : 0;
     const uint32_t end = column.empty() ? uint32_t(-1) : uint32_t(column.size() - 1);
-    for (size_t c = 0; c < kColumns; ++c) put32(raw.body, start);
-    for (size_t c = 0; c < kColumns; ++c) put32(raw.body, end);
+    for (size_t c = 0; c < kColumns; ++c)
+        put32(raw.body, start);
+    for (size_t c = 0; c < kColumns; ++c)
+        put32(raw.body, end);
     raw.body.insert(raw.body.end(), column.begin(), column.end());
     RawSection s;
     s.size[0] = s.size[1] = s.size[2] = 255;
@@ -107,8 +109,10 @@ TEST(HostileVxl, RandomBitFlips) {
     sweepBitFlips(fixtureFile(), 1, 2000, record);
     const Bytes jeep = loadModel("vxl/jeep.vxl");
     const Bytes subapc = loadModel("vxl/subapc.vxl");  // five sections
-    if (!jeep.empty()) sweepBitFlips(jeep, 2, 3000, record);
-    if (!subapc.empty()) sweepBitFlips(subapc, 3, 500, record);
+    if (!jeep.empty())
+        sweepBitFlips(jeep, 2, 3000, record);
+    if (!subapc.empty())
+        sweepBitFlips(subapc, 3, 500, record);
     record.print("bit-flipped .vxl files");
     EXPECT_GT(record.accepted, 0u);
     EXPECT_LT(record.accepted, record.inputs);
@@ -144,7 +148,8 @@ TEST(HostileVxl, ColumnSpansOutsideTheBody) {
                            std::numeric_limits<int32_t>::min()};
     size_t tried = 0;
     for (size_t c = 0; c < columns; c += 7) {
-        if (load32(jeep, startArray + 4 * c) == uint32_t(-1)) continue;  // empty columns have no data to misplace
+        if (load32(jeep, startArray + 4 * c) == uint32_t(-1))
+            continue;  // empty columns have no data to misplace
         for (int32_t value : bad) {
             for (size_t array : {startArray, endArray}) {
                 Bytes b = jeep;
@@ -222,12 +227,14 @@ TEST(HostileVxl, DenseStructuresStayWithinTheBound) {
     std::vector<std::pair<std::string, Bytes>> cases;
     // Runs of one voxel each (5 bytes of span data for a 10-byte run and voxel); 1-column
     // sections (120 bytes of header and tailer each); 255 x 255 columns of one voxel.
-    cases.emplace_back("one-voxel runs", writeVxl(makeModel({makeSection(
-                                             "runs", volumeWhere(200, 200, 255, [](int, int, int z) { return z % 2 == 0; }))})));
+    cases.emplace_back("one-voxel runs",
+                       writeVxl(makeModel({makeSection(
+                           "runs", volumeWhere(200, 200, 255, [](int, int, int z) { return z % 2 == 0; }))})));
     std::vector<VxlSection> sections(8000, makeSection("s", volumeWhere(1, 1, 1, [](int, int, int) { return true; })));
     cases.emplace_back("many sections", writeVxl(makeModel(sections)));
-    cases.emplace_back("many columns", writeVxl(makeModel({makeSection(
-                                           "columns", volumeWhere(255, 255, 1, [](int, int, int) { return true; }))})));
+    cases.emplace_back(
+        "many columns",
+        writeVxl(makeModel({makeSection("columns", volumeWhere(255, 255, 1, [](int, int, int) { return true; }))})));
     for (const auto &[name, bytes] : cases) {
         const Attempt a = attempt(readOnly, bytes);
         EXPECT_TRUE(a.accepted) << name << ": " << a.error;

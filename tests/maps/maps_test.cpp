@@ -45,15 +45,18 @@ PlaneGrid planeGrid(int n, const glm::mat3 &R, glm::vec3 offset, const glm::mat2
     for (int j = 0; j + 1 < n; ++j)
         for (int i = 0; i + 1 < n; ++i) {
             const uint32_t a = uint32_t(j * n + i), b = a + 1, d = a + uint32_t(n), e = d + 1;
-            for (uint32_t v : {a, b, e, a, e, d}) g.triangles.push_back(v);
+            for (uint32_t v : {a, b, e, a, e, d})
+                g.triangles.push_back(v);
         }
-    for (uint32_t v : g.triangles) g.wedgeUv.push_back(A * g.st(v, n) + c);
+    for (uint32_t v : g.triangles)
+        g.wedgeUv.push_back(A * g.st(v, n) + c);
     return g;
 }
 
 std::vector<glm::vec4> tangentsOf(const PlaneGrid &g) {
     std::vector<glm::vec3> p, n;
-    for (uint32_t v : g.triangles) p.push_back(g.positions[v]), n.push_back(g.normals[v]);
+    for (uint32_t v : g.triangles)
+        p.push_back(g.positions[v]), n.push_back(g.normals[v]);
     TangentInput in;
     in.positions = p.data();
     in.normals = n.data();
@@ -111,18 +114,24 @@ TEST(MikkTSpace, DegenerateAndUnmappedTrianglesTakeTheirVertexNeighboursSpace) {
     const PlaneGrid g = planeGrid(3, randomRotation(rng), glm::vec3(0.0f), glm::mat2(0.5f), glm::vec2(0.25f));
     std::vector<glm::vec3> p, n;
     std::vector<glm::vec2> uv = g.wedgeUv;
-    for (uint32_t v : g.triangles) p.push_back(g.positions[v]), n.push_back(g.normals[v]);
+    for (uint32_t v : g.triangles)
+        p.push_back(g.positions[v]), n.push_back(g.normals[v]);
     // A degenerate triangle on vertex 4's corner (position, normal, UV equal to a healthy corner).
     size_t corner4 = 0;
-    while (g.triangles[corner4] != 4) ++corner4;
-    for (int k = 0; k < 3; ++k) p.push_back(p[corner4]), n.push_back(n[corner4]), uv.push_back(uv[corner4]);
+    while (g.triangles[corner4] != 4)
+        ++corner4;
+    for (int k = 0; k < 3; ++k)
+        p.push_back(p[corner4]), n.push_back(n[corner4]), uv.push_back(uv[corner4]);
     TangentInput in{p.data(), n.data(), uv.data(), p.size() / 3};
     const std::vector<glm::vec4> t = computeMikkTSpaceTangents(in);
-    for (size_t c = p.size() - 3; c < p.size(); ++c) EXPECT_EQ(t[c], t[corner4]);
+    for (size_t c = p.size() - 3; c < p.size(); ++c)
+        EXPECT_EQ(t[c], t[corner4]);
     // Every corner of a triangle without UV area still gets a unit tangent from its neighbours.
-    for (int k = 0; k < 3; ++k) uv[k] = uv[0];
+    for (int k = 0; k < 3; ++k)
+        uv[k] = uv[0];
     const std::vector<glm::vec4> u = computeMikkTSpaceTangents(in);
-    for (int k = 1; k < 3; ++k) EXPECT_NEAR(glm::length(glm::vec3(u[size_t(k)])), 1.0f, 1e-5f);
+    for (int k = 1; k < 3; ++k)
+        EXPECT_NEAR(glm::length(glm::vec3(u[size_t(k)])), 1.0f, 1e-5f);
 }
 
 TEST(NormalBake, NormalFieldsOnRandomPlanesReadBackThroughTheShaderFrame) {
@@ -139,9 +148,11 @@ TEST(NormalBake, NormalFieldsOnRandomPlanesReadBackThroughTheShaderFrame) {
         const float fx = 2.0f + 3.0f * std::abs(u(rng)), fy = 2.0f + 3.0f * std::abs(u(rng));
         for (size_t v = 0; v < fine.positions.size(); ++v) {
             const glm::vec2 st = fine.st(v, 33);
-            fine.normals[v] = glm::normalize(R * glm::vec3(0.4f * std::sin(fx * st.x), 0.4f * std::cos(fy * st.y), 1.0f));
+            fine.normals[v] =
+                glm::normalize(R * glm::vec3(0.4f * std::sin(fx * st.x), 0.4f * std::cos(fy * st.y), 1.0f));
         }
-        for (glm::vec3 &n : coarse.normals) n = glm::normalize(n + 0.2f * R * glm::vec3(u(rng), u(rng), 0.0f));
+        for (glm::vec3 &n : coarse.normals)
+            n = glm::normalize(n + 0.2f * R * glm::vec3(u(rng), u(rng), 0.0f));
         NormalBakeOptions options;
         options.size = 256;
         const NormalMap map = bakeNormalMap(view(fine), view(coarse), options);
@@ -153,12 +164,14 @@ TEST(NormalBake, NormalFieldsOnRandomPlanesReadBackThroughTheShaderFrame) {
         for (size_t f = 0; f < coarse.triangles.size() / 3; ++f) {
             for (int s = 0; s < 6; ++s) {
                 float l1 = std::abs(u(rng)), l2 = std::abs(u(rng));
-                if (l1 + l2 > 1) l1 = 1 - l1, l2 = 1 - l2;
+                if (l1 + l2 > 1)
+                    l1 = 1 - l1, l2 = 1 - l2;
                 const float l[3] = {1 - l1 - l2, l1, l2};
                 glm::vec2 uv(0.0f);
                 glm::vec3 n(0.0f), t(0.0f);
                 float w = 0;
-                for (int k = 0; k < 3; ++k) uv += l[k] * coarse.wedgeUv[3 * f + size_t(k)];
+                for (int k = 0; k < 3; ++k)
+                    uv += l[k] * coarse.wedgeUv[3 * f + size_t(k)];
                 // Snap to the texel centre, and interpolate there.
                 const glm::vec2 texel = glm::floor(uv * float(map.size)) + 0.5f;
                 uv = texel / float(map.size);
@@ -167,7 +180,8 @@ TEST(NormalBake, NormalFieldsOnRandomPlanesReadBackThroughTheShaderFrame) {
                 const float b1 = ((uv.x - q[0].x) * (q[2].y - q[0].y) - (uv.y - q[0].y) * (q[2].x - q[0].x)) / d;
                 const float b2 = ((q[1].x - q[0].x) * (uv.y - q[0].y) - (q[1].y - q[0].y) * (uv.x - q[0].x)) / d;
                 const float b[3] = {1 - b1 - b2, b1, b2};
-                if (b[0] < 0.01f || b[1] < 0.01f || b[2] < 0.01f) continue;
+                if (b[0] < 0.01f || b[1] < 0.01f || b[2] < 0.01f)
+                    continue;
                 for (int k = 0; k < 3; ++k) {
                     n += b[k] * coarse.normals[coarse.triangles[3 * f + size_t(k)]];
                     t += b[k] * glm::vec3(map.cornerTangents[3 * f + size_t(k)]);
@@ -187,7 +201,8 @@ TEST(NormalBake, NormalFieldsOnRandomPlanesReadBackThroughTheShaderFrame) {
                 const glm::vec3 expected =
                     ax >= ay ? (1 - ax) * N(i0, j0) + (ax - ay) * N(i0 + 1, j0) + ay * N(i0 + 1, j0 + 1)
                              : (1 - ay) * N(i0, j0) + (ay - ax) * N(i0, j0 + 1) + ax * N(i0 + 1, j0 + 1);
-                const double angle = std::acos(std::clamp(double(glm::dot(shaded, glm::normalize(expected))), -1.0, 1.0)) * 180 / M_PI;
+                const double angle =
+                    std::acos(std::clamp(double(glm::dot(shaded, glm::normalize(expected))), -1.0, 1.0)) * 180 / M_PI;
                 worst = std::max(worst, angle);
                 ++checked;
             }

@@ -23,14 +23,15 @@ const std::filesystem::path kModels = VOXELFAIR_MODELS_DIR;
 // features. MeshLab's decimation breaks ties by memory order, so their figures vary from run to
 // run (measured: ttnkbarl 0.53-1.51, rgb 0.35-0.48, simple 0.31-0.32, at the goal's edge).
 const std::map<std::string, double> kShortfalls = {{"ttnkbarl", 1.8}, {"rgb", 0.6}, {"simple", 0.45}};
-}
+}  // namespace
 
 TEST(NormalMapGoal, DecimatedToTenPercentEveryModelShadesWithinAThirdOfItsVertexNormalsError) {
     if (!std::filesystem::is_directory(kModels / "vxl"))
         GTEST_SKIP() << "shared models folder " << kModels.string() << " is absent";
     std::vector<std::string> refused;
     const auto models = sharedModels(kModels, &refused);
-    for (const std::string &r : refused) std::printf("not accepted by the readers: %s\n", r.c_str());
+    for (const std::string &r : refused)
+        std::printf("not accepted by the readers: %s\n", r.c_str());
     ASSERT_GE(models.size(), 20u);
     std::printf("%-14s %8s %8s %7s %9s %9s %6s\n", "model", "faces", "10%", "map", "vertex", "mapped", "ratio");
     for (const auto &model : models) {

@@ -30,10 +30,12 @@ namespace voxelfair::mapstest {
 inline glm::dvec3 closestBarycentric(glm::dvec3 p, glm::dvec3 a, glm::dvec3 b, glm::dvec3 c) {
     const glm::dvec3 ab = b - a, ac = c - a, ap = p - a;
     const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
-    if (d1 <= 0 && d2 <= 0) return {1, 0, 0};
+    if (d1 <= 0 && d2 <= 0)
+        return {1, 0, 0};
     const glm::dvec3 bp = p - b;
     const double d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
-    if (d3 >= 0 && d4 <= d3) return {0, 1, 0};
+    if (d3 >= 0 && d4 <= d3)
+        return {0, 1, 0};
     const double vc = d1 * d4 - d3 * d2;
     if (vc <= 0 && d1 >= 0 && d3 <= 0) {
         const double v = d1 / (d1 - d3);
@@ -41,7 +43,8 @@ inline glm::dvec3 closestBarycentric(glm::dvec3 p, glm::dvec3 a, glm::dvec3 b, g
     }
     const glm::dvec3 cp = p - c;
     const double d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
-    if (d6 >= 0 && d5 <= d6) return {0, 0, 1};
+    if (d6 >= 0 && d5 <= d6)
+        return {0, 0, 1};
     const double vb = d5 * d2 - d1 * d6;
     if (vb <= 0 && d2 >= 0 && d6 <= 0) {
         const double w = d2 / (d2 - d6);
@@ -100,7 +103,8 @@ inline ShadingErrors measureShading(const NormalBakeMesh &source, const NormalBa
     std::unordered_map<uint64_t, std::vector<uint32_t>> grid;
     std::vector<glm::vec3> faceNormal(source.faceCount);
     for (size_t f = 0; f < source.faceCount; ++f) {
-        const glm::vec3 a = source.positions[source.triangles[3 * f]], b = source.positions[source.triangles[3 * f + 1]],
+        const glm::vec3 a = source.positions[source.triangles[3 * f]],
+                        b = source.positions[source.triangles[3 * f + 1]],
                         c = source.positions[source.triangles[3 * f + 2]];
         faceNormal[f] = glm::cross(b - a, c - a);
         const glm::vec3 lo = glm::min(a, glm::min(b, c)), hi = glm::max(a, glm::max(b, c));
@@ -113,7 +117,8 @@ inline ShadingErrors measureShading(const NormalBakeMesh &source, const NormalBa
     std::vector<double> cumulative(target.faceCount);
     double total = 0;
     for (size_t f = 0; f < target.faceCount; ++f) {
-        const glm::vec3 a = target.positions[target.triangles[3 * f]], b = target.positions[target.triangles[3 * f + 1]],
+        const glm::vec3 a = target.positions[target.triangles[3 * f]],
+                        b = target.positions[target.triangles[3 * f + 1]],
                         c = target.positions[target.triangles[3 * f + 2]];
         total += 0.5 * glm::length(glm::cross(b - a, c - a));
         cumulative[f] = total;
@@ -122,10 +127,13 @@ inline ShadingErrors measureShading(const NormalBakeMesh &source, const NormalBa
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     double sumVertex = 0, sumMapped = 0;
     for (size_t s = 0; s < sampleCount; ++s) {
-        const size_t f = size_t(std::lower_bound(cumulative.begin(), cumulative.end(), unit(rng) * total) - cumulative.begin());
-        if (f >= target.faceCount) continue;
+        const size_t f =
+            size_t(std::lower_bound(cumulative.begin(), cumulative.end(), unit(rng) * total) - cumulative.begin());
+        if (f >= target.faceCount)
+            continue;
         double r1 = unit(rng), r2 = unit(rng);
-        if (r1 + r2 > 1) r1 = 1 - r1, r2 = 1 - r2;
+        if (r1 + r2 > 1)
+            r1 = 1 - r1, r2 = 1 - r2;
         const float l[3] = {float(1 - r1 - r2), float(r1), float(r2)};
         glm::vec3 p(0.0f), n(0.0f), t(0.0f);
         glm::vec2 uv(0.0f);
@@ -148,11 +156,14 @@ inline ShadingErrors measureShading(const NormalBakeMesh &source, const NormalBa
             for (int64_t y = cy - 1; y <= cy + 1; ++y)
                 for (int64_t x = cx - 1; x <= cx + 1; ++x) {
                     const auto it = grid.find(key(x, y, z));
-                    if (it == grid.end()) continue;
+                    if (it == grid.end())
+                        continue;
                     for (uint32_t g : it->second) {
-                        if (glm::dot(faceNormal[g], n) <= 0.0f) continue;
+                        if (glm::dot(faceNormal[g], n) <= 0.0f)
+                            continue;
                         const uint32_t *sv = &source.triangles[3 * size_t(g)];
-                        const glm::dvec3 a(source.positions[sv[0]]), b(source.positions[sv[1]]), c(source.positions[sv[2]]);
+                        const glm::dvec3 a(source.positions[sv[0]]), b(source.positions[sv[1]]),
+                            c(source.positions[sv[2]]);
                         const glm::dvec3 bary = closestBarycentric(glm::dvec3(p), a, b, c);
                         const glm::dvec3 q = bary.x * a + bary.y * b + bary.z * c;
                         const double d = glm::dot(q - glm::dvec3(p), q - glm::dvec3(p));

@@ -50,8 +50,9 @@ int main(int argc, char **argv) {
         const std::filesystem::path file = argv[i];
         std::unique_ptr<pipeline::Model> model;
         try {
-            model = file.extension() == ".vxl" ? pipeline::loadVxl(file.string(), (file.parent_path().parent_path() / "pal").string())
-                                               : pipeline::loadVox(file.string());
+            model = file.extension() == ".vxl"
+                        ? pipeline::loadVxl(file.string(), (file.parent_path().parent_path() / "pal").string())
+                        : pipeline::loadVox(file.string());
         } catch (const std::exception &e) {
             std::fprintf(stderr, "%s: %s\n", file.string().c_str(), e.what());
             return 1;

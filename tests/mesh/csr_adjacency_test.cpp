@@ -29,7 +29,8 @@ TEST(MeshVertexNeighbours, FlatLatticeVertexHasEightNeighbours) {
     // a box corner has 3 edge + 3 diagonal neighbours.
     const shapes::QuadMesh box = shapes::boxLattice(4, 4, 4);
     CsrAdjacency n;
-    ASSERT_NO_THROW(buildVertexNeighbours({nullptr, box.positions.size(), box.offsets.data(), box.indices.data(), box.quadCount()}, n));
+    ASSERT_NO_THROW(buildVertexNeighbours(
+        {nullptr, box.positions.size(), box.offsets.data(), box.indices.data(), box.quadCount()}, n));
     EXPECT_EQ(n.size(box.find(2, 2, 4)), 8u);
     EXPECT_EQ(n.size(box.find(0, 0, 0)), 6u);
     EXPECT_EQ(n.size(box.find(2, 0, 0)), 8u);  // edge: 4 + 4, shared vertices counted once

@@ -40,7 +40,8 @@ TEST(MeshValidation, AcceptsMixedPolygonsAndTheEmptyMesh) {
 TEST(MeshValidation, NamesThePolygonAndTheProblem) {
     const std::vector<glm::vec3> p(4);
     const std::vector<uint32_t> offsets = {0, 3, 6};
-    EXPECT_EQ(rejection(polygonMesh(p, offsets, {0, 1, 2, 2, 3, 9})), "polygon 1 uses vertex 9, but there are 4 vertices");
+    EXPECT_EQ(rejection(polygonMesh(p, offsets, {0, 1, 2, 2, 3, 9})),
+              "polygon 1 uses vertex 9, but there are 4 vertices");
     EXPECT_EQ(rejection(polygonMesh(p, {0, 4, 3}, {0, 1, 2, 3})), "polygon 1: its offsets decrease (4 then 3)");
     EXPECT_EQ(rejection(polygonMesh(p, {1, 4}, {0, 1, 2, 3})), "polygon offsets must start at 0, the first is 1");
     EXPECT_NE(rejection(PolygonMesh{nullptr, 4, offsets.data(), nullptr, 2}).find("no index array"), std::string::npos);

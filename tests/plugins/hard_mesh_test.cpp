@@ -21,20 +21,23 @@ namespace {
 // one, and a triangle with a NaN corner. No colours.
 std::string hardMeshPly(const std::string &dir) {
     std::vector<std::array<double, 3>> v = {
-        {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1},  // cube 0-7
-        {3, 0, 0}, {3, 1, 0}, {4, 0, 0}, {2, 0, 1}, {3, 0, 2},                                  // fin 8-12
-        {5, 0, 0}, {6, 0, 0}, {7, 0, 0},                                                        // collinear 13-15
-        {1, 1, 1},                                                                              // duplicate of 6: 16
-        {9, 9, 9},                                                                              // isolated 17
-        {1e25, 0, 0}, {0, 1e25, 0}, {0, 0, 1e25},                                               // huge 18-20
-        {1e-25, 0, 0}, {0, 1e-25, 0}, {0, 0, 1e-25},                                            // tiny 21-23
-        {10, 10, 10}, {11, 10, 10}, {std::nan(""), 11, 10},                                     // NaN 24-26
+        {0, 0, 0},     {1, 0, 0},     {1, 1, 0},
+        {0, 1, 0},     {0, 0, 1},     {1, 0, 1},
+        {1, 1, 1},     {0, 1, 1},  // cube 0-7
+        {3, 0, 0},     {3, 1, 0},     {4, 0, 0},
+        {2, 0, 1},     {3, 0, 2},                              // fin 8-12
+        {5, 0, 0},     {6, 0, 0},     {7, 0, 0},               // collinear 13-15
+        {1, 1, 1},                                             // duplicate of 6: 16
+        {9, 9, 9},                                             // isolated 17
+        {1e25, 0, 0},  {0, 1e25, 0},  {0, 0, 1e25},            // huge 18-20
+        {1e-25, 0, 0}, {0, 1e-25, 0}, {0, 0, 1e-25},           // tiny 21-23
+        {10, 10, 10},  {11, 10, 10},  {std::nan(""), 11, 10},  // NaN 24-26
     };
     std::vector<std::array<int, 3>> f = {
-        {0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
-        {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 16}, {3, 0, 4}, {3, 4, 7},  // cube, one corner duplicated
-        {8, 9, 10}, {8, 9, 11}, {8, 9, 12},                                // three faces on edge 8-9
-        {13, 14, 15},                                                      // zero area
+        {0, 2, 1},    {0, 3, 2},    {4, 5, 6},    {4, 6, 7},  {0, 1, 5}, {0, 5, 4},
+        {1, 2, 6},    {1, 6, 5},    {2, 3, 7},    {2, 7, 16}, {3, 0, 4}, {3, 4, 7},  // cube, one corner duplicated
+        {8, 9, 10},   {8, 9, 11},   {8, 9, 12},                                      // three faces on edge 8-9
+        {13, 14, 15},                                                                // zero area
         {18, 19, 20}, {21, 22, 23}, {24, 25, 26},
     };
     const std::string path = dir + "/hard.ply";
@@ -42,8 +45,10 @@ std::string hardMeshPly(const std::string &dir) {
     out << "ply\nformat ascii 1.0\nelement vertex " << v.size()
         << "\nproperty float x\nproperty float y\nproperty float z\nelement face " << f.size()
         << "\nproperty list uchar int vertex_indices\nend_header\n";
-    for (const auto &p : v) out << p[0] << " " << p[1] << " " << p[2] << "\n";
-    for (const auto &t : f) out << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
+    for (const auto &p : v)
+        out << p[0] << " " << p[1] << " " << p[2] << "\n";
+    for (const auto &t : f)
+        out << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
     return path;
 }
 
@@ -62,7 +67,8 @@ std::string script(const std::string &dir, int mode) {
       << "  <Param type=\"RichBool\" name=\"triangulate\" value=\"true\"/>\n </filter>\n"
       << " <filter name=\"Voxel Texture Atlas: Greedy Charts\">\n"
       << "  <Param type=\"RichFloat\" name=\"chartAngle\" value=\"45.573\"/>\n"
-      << "  <Param type=\"RichEnum\" name=\"packing\" value=\"0\" enum_cardinality=\"2\" enum_val0=\"Tight\" enum_val1=\"Paper\"/>\n"
+      << "  <Param type=\"RichEnum\" name=\"packing\" value=\"0\" enum_cardinality=\"2\" enum_val0=\"Tight\" "
+         "enum_val1=\"Paper\"/>\n"
       << "  <Param type=\"RichFloat\" name=\"texelsPerVoxel\" value=\"8\"/>\n"
       << "  <Param type=\"RichInt\" name=\"textureSize\" value=\"0\"/>\n"
       << "  <Param type=\"RichBool\" name=\"fillTexture\" value=\"true\"/>\n"
@@ -70,7 +76,8 @@ std::string script(const std::string &dir, int mode) {
       << "  <Param type=\"RichInt\" name=\"maxTextureSize\" value=\"4096\"/>\n"
       << "  <Param type=\"RichFloat\" name=\"voxelSize\" value=\"0\"/>\n"
       << "  <Param type=\"RichInt\" name=\"gutter\" value=\"4\"/>\n"
-      << "  <Param type=\"RichEnum\" name=\"colours\" value=\"0\" enum_cardinality=\"2\" enum_val0=\"Crisp voxel colours\" enum_val1=\"Smoothed vertex colours\"/>\n"
+      << "  <Param type=\"RichEnum\" name=\"colours\" value=\"0\" enum_cardinality=\"2\" enum_val0=\"Crisp voxel "
+         "colours\" enum_val1=\"Smoothed vertex colours\"/>\n"
       << "  <Param type=\"RichString\" name=\"textureFile\" value=\"" << dir << "/hard_texture.png\"/>\n </filter>\n"
       << "</FilterScript>\n";
     const std::string path = dir + "/hard.mlx";
@@ -94,7 +101,7 @@ TEST(HardMeshes, FiltersFinishWithoutCrashOrNewNaN) {
         EXPECT_NE(run.output.find("Voxel Fairing: "), std::string::npos) << run.output;
         EXPECT_NE(run.output.find("Texture Atlas: "), std::string::npos) << run.output;
         EXPECT_NE(run.output.find("no face colours"), std::string::npos) << "the missing colours are not reported\n"
-                                                                          << run.output;
+                                                                         << run.output;
         const PlyMesh after = readAsciiPly(dir + "/out.ply");
         ASSERT_EQ(after.positions.size(), before.positions.size());
         for (size_t v = 0; v < after.positions.size(); ++v)
@@ -105,7 +112,8 @@ TEST(HardMeshes, FiltersFinishWithoutCrashOrNewNaN) {
             }
         ASSERT_EQ(after.wedgeUv.size(), after.triangles.size());
         for (const auto &uv : after.wedgeUv)
-            for (float x : uv) EXPECT_TRUE(std::isfinite(x) && x >= 0.0f && x <= 1.0f);
+            for (float x : uv)
+                EXPECT_TRUE(std::isfinite(x) && x >= 0.0f && x <= 1.0f);
         EXPECT_TRUE(fs::exists(dir + "/hard_texture.png"));
         fs::remove_all(dir);
     }

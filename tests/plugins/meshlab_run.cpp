@@ -11,7 +11,8 @@ namespace {
 
 std::string quote(const std::string &s) {
     std::string q = "'";
-    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    for (char c : s)
+        q += c == '\'' ? std::string("'\\''") : std::string(1, c);
     return q + "'";
 }
 
@@ -20,16 +21,19 @@ std::string quote(const std::string &s) {
 std::string makeTempDir() {
     char pattern[] = "/tmp/voxelfair-test-XXXXXX";
     const char *dir = mkdtemp(pattern);
-    if (dir == nullptr) throw std::runtime_error("mkdtemp failed");
+    if (dir == nullptr)
+        throw std::runtime_error("mkdtemp failed");
     return dir;
 }
 
 MeshlabRun runMeshlabServer(const std::vector<std::string> &args, const std::map<std::string, std::string> &env) {
     const std::string home = makeTempDir();
     std::string command = "env XDG_CONFIG_HOME=" + quote(home) + " XDG_RUNTIME_DIR=" + quote(home);
-    for (const auto &[key, value] : env) command += " " + key + "=" + quote(value);
+    for (const auto &[key, value] : env)
+        command += " " + key + "=" + quote(value);
     command += " xvfb-run -a -s '-screen 0 640x480x24' " + quote(VOXELFAIR_MESHLABSERVER);
-    for (const std::string &a : args) command += " " + quote(a);
+    for (const std::string &a : args)
+        command += " " + quote(a);
     const std::string log = home + "/output.txt";
     command += " > " + quote(log) + " 2>&1";
 

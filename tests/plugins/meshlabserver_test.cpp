@@ -57,7 +57,8 @@ PlyMesh importWithMeshLab(const std::string &vxlPath, const std::map<std::string
     const MeshlabRun run = runMeshlabServer({"-i", vxlPath, "-o", ply, "-m", "fc", "fq", "sa"}, env);
     EXPECT_EQ(run.exitCode, 0) << run.output;
     EXPECT_TRUE(fs::exists(ply)) << "meshlabserver did not save " << ply << "\n" << run.output;
-    if (log) *log = run.output;
+    if (log)
+        *log = run.output;
     PlyMesh mesh = fs::exists(ply) ? readAsciiPly(ply) : PlyMesh{};
     fs::remove_all(dir);
     return mesh;
@@ -71,7 +72,8 @@ void expectSameSurface(const PlyMesh &ply, const SceneSurface &expected) {
     ASSERT_EQ(ply.faceColours.size(), ply.triangles.size());
     ASSERT_EQ(ply.faceQuality.size(), ply.triangles.size());
     for (size_t v = 0; v < ply.positions.size(); ++v)
-        for (int k = 0; k < 3; ++k) ASSERT_NEAR(ply.positions[v][k], expected.positions[v][size_t(k)], 1e-3) << "vertex " << v;
+        for (int k = 0; k < 3; ++k)
+            ASSERT_NEAR(ply.positions[v][k], expected.positions[v][size_t(k)], 1e-3) << "vertex " << v;
     for (size_t q = 0; q < expected.quadCount(); ++q) {
         const uint32_t *c = &expected.quads[4 * q];
         const auto &t0 = ply.triangles[2 * q], &t1 = ply.triangles[2 * q + 1];
@@ -97,7 +99,8 @@ SceneSurface expectedVoxSurface(const std::string &voxPath, int frame = 0) {
 
 std::string writeTempFile(const std::string &name, const std::vector<uint8_t> &bytes) {
     const std::string path = makeTempDir() + "/" + name;
-    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char *>(bytes.data()), std::streamsize(bytes.size()));
+    std::ofstream(path, std::ios::binary)
+        .write(reinterpret_cast<const char *>(bytes.data()), std::streamsize(bytes.size()));
     return path;
 }
 
@@ -117,7 +120,8 @@ TEST(MeshlabServer, ImportsTheExampleTankWithColoursAndSections) {
 }
 
 TEST(MeshlabServer, ImportsSharedModelsWithAndWithoutAPalette) {
-    if (!haveModels()) GTEST_SKIP() << "the shared models are absent: " << kModels;
+    if (!haveModels())
+        GTEST_SKIP() << "the shared models are absent: " << kModels;
     for (const char *name : {"3tnk", "hmec", "subapc", "legs", "ttnkbarl"}) {
         SCOPED_TRACE(name);
         const std::string vxl = kModels + "/" + name + ".vxl";
@@ -129,7 +133,8 @@ TEST(MeshlabServer, ImportsSharedModelsWithAndWithoutAPalette) {
 }
 
 TEST(MeshlabServer, ReportsManifoldSplitsInTheLog) {
-    if (!haveModels()) GTEST_SKIP() << "the shared models are absent: " << kModels;
+    if (!haveModels())
+        GTEST_SKIP() << "the shared models are absent: " << kModels;
     const std::string vxl = kModels + "/subapc.vxl";
     const SceneSurface expected = expectedSurface(vxl);
     std::string log;
@@ -174,7 +179,8 @@ TEST(MeshlabServer, MissingOrBrokenCompanionFilesAreNamed) {
     EXPECT_NE(run.output.find(dir + "/tank.hva"), std::string::npos) << run.output;
 
     fs::remove(dir + "/tank.hva");
-    run = runMeshlabServer({"-i", dir + "/tank.vxl", "-o", dir + "/out.ply"}, {{"VOXELFAIR_PALETTE", dir + "/none.pal"}});
+    run =
+        runMeshlabServer({"-i", dir + "/tank.vxl", "-o", dir + "/out.ply"}, {{"VOXELFAIR_PALETTE", dir + "/none.pal"}});
     EXPECT_NE(run.exitCode, 0);
     EXPECT_NE(run.output.find(dir + "/none.pal"), std::string::npos) << run.output;
     fs::remove_all(dir);
@@ -190,7 +196,8 @@ TEST(MeshlabServer, ListsOurFilters) {
 }
 
 TEST(MeshlabServer, ImportsSharedVoxFilesLikeTheHostFreeReader) {
-    if (!fs::is_directory(kVoxModels)) GTEST_SKIP() << "the shared models are absent: " << kVoxModels;
+    if (!fs::is_directory(kVoxModels))
+        GTEST_SKIP() << "the shared models are absent: " << kVoxModels;
     for (const char *name : {"robo", "crabby", "8ontop", "test-transform", "teardown"}) {
         SCOPED_TRACE(name);
         const std::string vox = kVoxModels + "/" + name + ".vox";
@@ -249,14 +256,17 @@ TEST(MeshlabServer, FairingFilterMatchesTheHostFreeUnit) {
     const std::string tank = std::string(VOXELFAIR_EXAMPLE_DIR) + "/tank.vxl";
     SceneSurface expected = expectedSurface(tank);
     std::vector<uint32_t> offsets(expected.quadCount() + 1);
-    for (size_t q = 0; q < offsets.size(); ++q) offsets[q] = uint32_t(4 * q);
-    const FairingReport report = fairModifiedLanczos({expected.positions.data(), expected.positions.size(), offsets.data(), expected.quads.data(), expected.quadCount()}, nullptr);
+    for (size_t q = 0; q < offsets.size(); ++q)
+        offsets[q] = uint32_t(4 * q);
+    const FairingReport report = fairModifiedLanczos({expected.positions.data(), expected.positions.size(),
+                                                      offsets.data(), expected.quads.data(), expected.quadCount()},
+                                                     nullptr);
     ASSERT_EQ(report.status, FairingStatus::Ok);
     ASSERT_GT(report.movedVertices, expected.positions.size() / 4);
 
     const std::string dir = makeTempDir();
-    const MeshlabRun run = runMeshlabServer({"-i", tank, "-o", dir + "/out.ply", "-m", "fc", "fq", "sa", "-s",
-                                             writeScript(dir, kFairingFilter)});
+    const MeshlabRun run = runMeshlabServer(
+        {"-i", tank, "-o", dir + "/out.ply", "-m", "fc", "fq", "sa", "-s", writeScript(dir, kFairingFilter)});
     ASSERT_EQ(run.exitCode, 0) << run.output;
     EXPECT_NE(run.output.find("Voxel Fairing: 1 pass(es)"), std::string::npos) << run.output;
     EXPECT_NE(run.output.find(std::to_string(report.movedVertices) + " vertices moved"), std::string::npos)
@@ -271,11 +281,15 @@ TEST(MeshlabServer, AttributeSmoothingGivesVertexColoursAndNormals) {
     const std::string tank = std::string(VOXELFAIR_EXAMPLE_DIR) + "/tank.vxl";
     const SceneSurface expected = expectedSurface(tank);
     std::vector<uint32_t> offsets(expected.quadCount() + 1);
-    for (size_t q = 0; q < offsets.size(); ++q) offsets[q] = uint32_t(4 * q);
+    for (size_t q = 0; q < offsets.size(); ++q)
+        offsets[q] = uint32_t(4 * q);
     std::vector<glm::vec4> quadColours(expected.quadCount()), vertexColours(expected.positions.size());
     for (size_t q = 0; q < quadColours.size(); ++q)
-        quadColours[q] = glm::vec4(expected.quadColours[q].r, expected.quadColours[q].g, expected.quadColours[q].b, 255);
-    computeVertexColours({nullptr, expected.positions.size(), offsets.data(), expected.quads.data(), expected.quadCount(), quadColours.data()}, vertexColours.data());
+        quadColours[q] =
+            glm::vec4(expected.quadColours[q].r, expected.quadColours[q].g, expected.quadColours[q].b, 255);
+    computeVertexColours({nullptr, expected.positions.size(), offsets.data(), expected.quads.data(),
+                          expected.quadCount(), quadColours.data()},
+                         vertexColours.data());
 
     const std::string dir = makeTempDir();
     const MeshlabRun run = runMeshlabServer({"-i", tank, "-o", dir + "/out.ply", "-m", "vc", "vn", "sa", "-s",
@@ -286,7 +300,8 @@ TEST(MeshlabServer, AttributeSmoothingGivesVertexColoursAndNormals) {
     size_t vertices = 0;
     bool hasNormals = false, hasColours = false;
     while (std::getline(in, line) && line != "end_header") {
-        if (line.rfind("element vertex", 0) == 0) vertices = std::stoul(line.substr(15));
+        if (line.rfind("element vertex", 0) == 0)
+            vertices = std::stoul(line.substr(15));
         hasNormals |= line == "property float nx";
         hasColours |= line == "property uchar red";
     }

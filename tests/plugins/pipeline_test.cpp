@@ -28,16 +28,23 @@ const std::string kTank = std::string(VOXELFAIR_EXAMPLE_DIR) + "/tank.vxl";
 std::string pipelineScript(const std::string &dir, const std::string &texture, double decimation) {
     std::ifstream in(std::string(VOXELFAIR_SCRIPTS_DIR) + "/voxelfair_pipeline.mlx");
     std::string text((std::istreambuf_iterator<char>(in)), {});
-    const std::pair<std::string, std::string> values[] = {
-        {"@MODE@", "0"}, {"@LAMBDA@", "1.3333334"}, {"@PASSES@", "1"}, {"@PACKING@", "0"}, {"@TEXELS_PER_VOXEL@", "8"},
-        {"@COLOURS@", "0"}, {"@TEXTURE_FILE@", texture}, {"@DECIMATION@", std::to_string(decimation)},
-        {"@NORMAL_FILE@", dir + "/normal.png"}};
+    const std::pair<std::string, std::string> values[] = {{"@MODE@", "0"},
+                                                          {"@LAMBDA@", "1.3333334"},
+                                                          {"@PASSES@", "1"},
+                                                          {"@PACKING@", "0"},
+                                                          {"@TEXELS_PER_VOXEL@", "8"},
+                                                          {"@COLOURS@", "0"},
+                                                          {"@TEXTURE_FILE@", texture},
+                                                          {"@DECIMATION@", std::to_string(decimation)},
+                                                          {"@NORMAL_FILE@", dir + "/normal.png"}};
     for (const auto &[key, value] : values)
-        for (size_t at; (at = text.find(key)) != std::string::npos;) text.replace(at, key.size(), value);
+        for (size_t at; (at = text.find(key)) != std::string::npos;)
+            text.replace(at, key.size(), value);
     // Without decimation, no layer copy and no normal map either (as the wrapper does).
     if (decimation >= 1.0)
-        for (const char *filter : {" <filter name=\"Simplification:[^]*?</filter>\n", " <filter name=\"Duplicate Current layer\"/>\n",
-                                   " <filter name=\"Voxel Texture: Bake Normal Map\">[^]*?</filter>\n"})
+        for (const char *filter :
+             {" <filter name=\"Simplification:[^]*?</filter>\n", " <filter name=\"Duplicate Current layer\"/>\n",
+              " <filter name=\"Voxel Texture: Bake Normal Map\">[^]*?</filter>\n"})
             text = std::regex_replace(text, std::regex(filter), "");
     const std::string path = dir + "/pipeline.mlx";
     std::ofstream(path) << text;
@@ -60,9 +67,11 @@ QRgb texelAt(const QImage &image, float u, float v) {
 [[maybe_unused]] std::vector<Sample> interiorSamples(const std::array<float, 6> &uv) {
     const glm::dvec2 q[3] = {{uv[0], uv[1]}, {uv[2], uv[3]}, {uv[4], uv[5]}};
     glm::dvec2 points[4];
-    if (!(voxelfair::faceInteriorPoints(q, points) > 0)) return {};
+    if (!(voxelfair::faceInteriorPoints(q, points) > 0))
+        return {};
     std::vector<Sample> samples;
-    for (const glm::dvec2 &p : points) samples.push_back({float(p.x), float(p.y)});
+    for (const glm::dvec2 &p : points)
+        samples.push_back({float(p.x), float(p.y)});
     return samples;
 }
 
@@ -82,7 +91,8 @@ PipelineResult runPipeline(double decimation, const std::string &model = kTank) 
     PipelineResult result;
     result.output = run.output;
     result.exitCode = run.exitCode;
-    if (fs::exists(dir + "/out.ply")) result.mesh = readAsciiPly(dir + "/out.ply");
+    if (fs::exists(dir + "/out.ply"))
+        result.mesh = readAsciiPly(dir + "/out.ply");
     result.texture = QImage(QString::fromStdString(texture));
     fs::remove_all(dir);
     return result;
@@ -136,13 +146,15 @@ void checkCrispTexture(const PipelineResult &r, const std::string &model) {
             const bool match = texelAt(r.texture, float(p.x / side), float(p.y / height)) == qRgb(c[0], c[1], c[2]);
             ++samples;
             matches += match;
-            if (inradius >= std::sqrt(2.0)) ++sure, sureMatches += match;
+            if (inradius >= std::sqrt(2.0))
+                ++sure, sureMatches += match;
         }
     }
-    std::printf("%s: %zu of %zu interior samples (%.3f%%) read their voxel colour; %zu of %zu on faces of UV inradius >= "
-                "sqrt(2) texels\n",
-                fs::path(model).filename().c_str(), matches, samples, 100.0 * double(matches) / double(samples),
-                sureMatches, sure);
+    std::printf(
+        "%s: %zu of %zu interior samples (%.3f%%) read their voxel colour; %zu of %zu on faces of UV inradius >= "
+        "sqrt(2) texels\n",
+        fs::path(model).filename().c_str(), matches, samples, 100.0 * double(matches) / double(samples), sureMatches,
+        sure);
     EXPECT_EQ(matches, samples) << "samples that differ from their face's voxel colour";
     EXPECT_EQ(sureMatches, sure);
     EXPECT_EQ(r.output.find("Texture Atlas: warning"), std::string::npos) << r.output;
@@ -153,7 +165,8 @@ TEST(Pipeline, CrispTextureKeepsEveryVoxelColour) {
     EXPECT_EQ(tank.mesh.triangles.size(), 4960u);  // 2480 quads, none lost
     expectCrispTexture(kTank);
     const std::string models = VOXELFAIR_MODELS_DIR;
-    if (!fs::is_directory(models)) GTEST_SKIP() << "the shared models are absent: " << models;
+    if (!fs::is_directory(models))
+        GTEST_SKIP() << "the shared models are absent: " << models;
     // Every shared model, not a chosen few: VXL (with their HVA) and VOX.
     std::vector<std::string> files;
     for (const char *folder : {"/vxl", "/vox"})
@@ -185,14 +198,18 @@ TEST(Pipeline, DecimationToHalfKeepsTheTextureMapped) {
     auto point = [](const PlyMesh &m, size_t f, float b0, float b1, float b2) {
         std::array<float, 3> p{};
         for (int k = 0; k < 3; ++k)
-            p[size_t(k)] = b0 * m.positions[m.triangles[f][0]][size_t(k)] + b1 * m.positions[m.triangles[f][1]][size_t(k)] +
+            p[size_t(k)] = b0 * m.positions[m.triangles[f][0]][size_t(k)] +
+                           b1 * m.positions[m.triangles[f][1]][size_t(k)] +
                            b2 * m.positions[m.triangles[f][2]][size_t(k)];
         return p;
     };
     std::vector<std::array<float, 3>> centres(full.mesh.triangles.size());
-    for (size_t f = 0; f < centres.size(); ++f) centres[f] = point(full.mesh, f, 1.f / 3, 1.f / 3, 1.f / 3);
+    for (size_t f = 0; f < centres.size(); ++f)
+        centres[f] = point(full.mesh, f, 1.f / 3, 1.f / 3, 1.f / 3);
     size_t samples = 0, matches = 0;
-    const float weights[4][3] = {{1.f / 3, 1.f / 3, 1.f / 3}, {2.f / 3, 1.f / 6, 1.f / 6}, {1.f / 6, 2.f / 3, 1.f / 6},
+    const float weights[4][3] = {{1.f / 3, 1.f / 3, 1.f / 3},
+                                 {2.f / 3, 1.f / 6, 1.f / 6},
+                                 {1.f / 6, 2.f / 3, 1.f / 6},
                                  {1.f / 6, 1.f / 6, 2.f / 3}};
     for (size_t f = 0; f < half.mesh.triangles.size(); ++f) {
         const auto &uv = half.mesh.wedgeUv[f];
@@ -203,7 +220,8 @@ TEST(Pipeline, DecimationToHalfKeepsTheTextureMapped) {
             for (size_t g = 0; g < centres.size(); ++g) {
                 const float dx = centres[g][0] - p[0], dy = centres[g][1] - p[1], dz = centres[g][2] - p[2];
                 const float d = dx * dx + dy * dy + dz * dz;
-                if (d < best) best = d, nearest = g;
+                if (d < best)
+                    best = d, nearest = g;
             }
             const auto &c = full.mesh.faceColours[nearest];
             const float u = w[0] * uv[0] + w[1] * uv[2] + w[2] * uv[4], v = w[0] * uv[1] + w[1] * uv[3] + w[2] * uv[5];
@@ -212,8 +230,9 @@ TEST(Pipeline, DecimationToHalfKeepsTheTextureMapped) {
         }
     }
     const double share = double(matches) / double(samples);
-    std::printf("after quadric decimation to %.1f%% of the faces: %.1f%% of %zu texture samples keep their voxel colour\n",
-                100.0 * ratio, 100.0 * share, samples);
+    std::printf(
+        "after quadric decimation to %.1f%% of the faces: %.1f%% of %zu texture samples keep their voxel colour\n",
+        100.0 * ratio, 100.0 * share, samples);
     RecordProperty("colour_match_after_decimation", std::to_string(share));
     EXPECT_GT(share, 0.8);
 }

@@ -17,10 +17,12 @@ struct Element {
 
 PlyMesh readAsciiPly(const std::string &path) {
     std::ifstream in(path);
-    if (!in) throw std::runtime_error(path + ": cannot open");
+    if (!in)
+        throw std::runtime_error(path + ": cannot open");
     std::string line;
     std::getline(in, line);
-    if (line.rfind("ply", 0) != 0) throw std::runtime_error(path + ": not a PLY file");
+    if (line.rfind("ply", 0) != 0)
+        throw std::runtime_error(path + ": not a PLY file");
 
     PlyMesh mesh;
     std::vector<Element> elements;
@@ -30,7 +32,8 @@ PlyMesh readAsciiPly(const std::string &path) {
         words >> keyword;
         if (keyword == "format" && line.find("ascii") == std::string::npos)
             throw std::runtime_error(path + ": not ASCII (save with -m ... sa)");
-        if (keyword == "comment") mesh.comments.push_back(line.substr(8));
+        if (keyword == "comment")
+            mesh.comments.push_back(line.substr(8));
         if (keyword == "element") {
             Element e;
             words >> e.name >> e.count;
@@ -51,7 +54,8 @@ PlyMesh readAsciiPly(const std::string &path) {
     }
     for (const Element &e : elements) {
         for (size_t i = 0; i < e.count; ++i) {
-            if (!std::getline(in, line)) throw std::runtime_error(path + ": truncated " + e.name + " list");
+            if (!std::getline(in, line))
+                throw std::runtime_error(path + ": truncated " + e.name + " list");
             std::istringstream values(line);
             std::array<float, 3> p{};
             std::array<uint8_t, 4> colour{0, 0, 0, 255};
@@ -60,9 +64,11 @@ PlyMesh readAsciiPly(const std::string &path) {
                 if (prop == "list:texcoord") {
                     size_t n = 0;
                     values >> n;
-                    if (n != 6) throw std::runtime_error(path + ": a face has " + std::to_string(n) + " texcoords");
+                    if (n != 6)
+                        throw std::runtime_error(path + ": a face has " + std::to_string(n) + " texcoords");
                     std::array<float, 6> uv{};
-                    for (float &x : uv) values >> x;
+                    for (float &x : uv)
+                        values >> x;
                     mesh.wedgeUv.push_back(uv);
                     continue;
                 }
@@ -70,9 +76,11 @@ PlyMesh readAsciiPly(const std::string &path) {
                     size_t n = 0;
                     values >> n;
                     std::vector<uint32_t> idx(n);
-                    for (auto &v : idx) values >> v;
+                    for (auto &v : idx)
+                        values >> v;
                     if (e.name == "face") {
-                        if (n != 3) throw std::runtime_error(path + ": a face is not a triangle");
+                        if (n != 3)
+                            throw std::runtime_error(path + ": a face is not a triangle");
                         mesh.triangles.push_back({idx[0], idx[1], idx[2]});
                     }
                     continue;
@@ -82,22 +90,34 @@ PlyMesh readAsciiPly(const std::string &path) {
                 values >> token;
                 char *end = nullptr;
                 const double v = std::strtod(token.c_str(), &end);
-                if (token.empty() || *end != '\0') values.setstate(std::ios::failbit);
+                if (token.empty() || *end != '\0')
+                    values.setstate(std::ios::failbit);
                 if (e.name == "vertex") {
-                    if (prop == "x") p[0] = float(v);
-                    if (prop == "y") p[1] = float(v);
-                    if (prop == "z") p[2] = float(v);
+                    if (prop == "x")
+                        p[0] = float(v);
+                    if (prop == "y")
+                        p[1] = float(v);
+                    if (prop == "z")
+                        p[2] = float(v);
                 } else if (e.name == "face") {
-                    if (prop == "red") colour[0] = uint8_t(v), hasColour = true;
-                    if (prop == "green") colour[1] = uint8_t(v);
-                    if (prop == "blue") colour[2] = uint8_t(v);
-                    if (prop == "alpha") colour[3] = uint8_t(v);
-                    if (prop == "quality") mesh.faceQuality.push_back(float(v));
+                    if (prop == "red")
+                        colour[0] = uint8_t(v), hasColour = true;
+                    if (prop == "green")
+                        colour[1] = uint8_t(v);
+                    if (prop == "blue")
+                        colour[2] = uint8_t(v);
+                    if (prop == "alpha")
+                        colour[3] = uint8_t(v);
+                    if (prop == "quality")
+                        mesh.faceQuality.push_back(float(v));
                 }
             }
-            if (!values) throw std::runtime_error(path + ": bad " + e.name + " line: " + line);
-            if (e.name == "vertex") mesh.positions.push_back(p);
-            if (e.name == "face" && hasColour) mesh.faceColours.push_back(colour);
+            if (!values)
+                throw std::runtime_error(path + ": bad " + e.name + " line: " + line);
+            if (e.name == "vertex")
+                mesh.positions.push_back(p);
+            if (e.name == "face" && hasColour)
+                mesh.faceColours.push_back(colour);
         }
     }
     return mesh;

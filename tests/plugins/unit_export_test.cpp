@@ -28,10 +28,12 @@ namespace {
 const std::string kModels = std::string(VOXELFAIR_MODELS_DIR) + "/vxl";
 const std::string kVoxModels = std::string(VOXELFAIR_MODELS_DIR) + "/vox";
 
-size_t importedFaces(const std::string &model, const std::map<std::string, std::string> &env, std::string *log = nullptr) {
+size_t importedFaces(const std::string &model, const std::map<std::string, std::string> &env,
+                     std::string *log = nullptr) {
     const std::string dir = makeTempDir();
     const MeshlabRun run = runMeshlabServer({"-i", model, "-o", dir + "/out.ply", "-m", "fq", "sa"}, env);
-    if (log) *log = run.output;
+    if (log)
+        *log = run.output;
     const size_t faces = fs::exists(dir + "/out.ply") ? readAsciiPly(dir + "/out.ply").triangles.size() : 0;
     fs::remove_all(dir);
     return faces;
@@ -40,13 +42,15 @@ size_t importedFaces(const std::string &model, const std::map<std::string, std::
 // Khronos' validator over the files: the summary lines; fails the test unless 0 errors, 0 warnings.
 void expectValid(const std::vector<std::string> &glbs) {
     std::string command = "node '" + std::string(VOXELFAIR_SOURCE_DIR) + "/tools/gltf_validate.js'";
-    for (const std::string &g : glbs) command += " '" + g + "'";
+    for (const std::string &g : glbs)
+        command += " '" + g + "'";
     command += " 2>&1";
     FILE *pipe = popen(command.c_str(), "r");
     ASSERT_NE(pipe, nullptr);
     std::string output;
     char buffer[4096];
-    while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
+    while (size_t n = fread(buffer, 1, sizeof buffer, pipe))
+        output.append(buffer, n);
     const int status = pclose(pipe);
     EXPECT_EQ(status, 0) << output;
     for (const std::string &g : glbs)
@@ -66,12 +70,14 @@ tinygltf::Model loadGlb(const std::string &path) {
 
 const tinygltf::Node *findNode(const tinygltf::Model &model, const std::string &name) {
     for (const tinygltf::Node &n : model.nodes)
-        if (n.name == name) return &n;
+        if (n.name == name)
+            return &n;
     return nullptr;
 }
 
 void writeFile(const std::string &path, const std::vector<uint8_t> &bytes) {
-    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char *>(bytes.data()), std::streamsize(bytes.size()));
+    std::ofstream(path, std::ios::binary)
+        .write(reinterpret_cast<const char *>(bytes.data()), std::streamsize(bytes.size()));
 }
 
 // A unit written from code: a body box, a turret box, a barrel rod, each with a one-frame .hva
@@ -79,9 +85,7 @@ void writeFile(const std::string &path, const std::vector<uint8_t> &bytes) {
 std::string writeUnit(const std::string &dir, const std::string &stem, std::mt19937 &rng) {
     using namespace voxelfair::fixtures;
     std::uniform_int_distribution<int> side(3, 9);
-    const auto box = [&](int x, int y, int z) {
-        return volumeWhere(x, y, z, [](int, int, int) { return true; });
-    };
+    const auto box = [&](int x, int y, int z) { return volumeWhere(x, y, z, [](int, int, int) { return true; }); };
     const std::pair<std::string, VoxelVolume> parts[3] = {
         {"", box(side(rng) + 6, side(rng), side(rng))}, {"tur", box(side(rng), side(rng), 3)}, {"barl", box(8, 1, 1)}};
     for (const auto &[suffix, volume] : parts) {
@@ -102,7 +106,8 @@ std::string writeUnit(const std::string &dir, const std::string &stem, std::mt19
 }  // namespace
 
 TEST(Units, SharedTankImportsAsBodyTurretAndBarrel) {
-    if (!fs::is_directory(kModels)) GTEST_SKIP() << "the shared models are absent: " << kModels;
+    if (!fs::is_directory(kModels))
+        GTEST_SKIP() << "the shared models are absent: " << kModels;
     std::string log;
     const size_t unit = importedFaces(kModels + "/3tnk.vxl", {}, &log);
     const size_t body = importedFaces(kModels + "/3tnk.vxl", {{"VOXELFAIR_UNIT", "0"}});
@@ -136,7 +141,8 @@ TEST(Units, GeneratedUnitsAddUpAndTheirGlbHasOneNodePerPart) {
         ASSERT_TRUE(fs::exists(glb)) << run.output;
         expectValid({glb});
         const tinygltf::Model model = loadGlb(glb);
-        const tinygltf::Node *b = findNode(model, "body"), *t = findNode(model, "turret"), *r = findNode(model, "barrel");
+        const tinygltf::Node *b = findNode(model, "body"), *t = findNode(model, "turret"),
+                             *r = findNode(model, "barrel");
         ASSERT_TRUE(b && t && r);
         ASSERT_EQ(t->translation.size(), 3u);
         EXPECT_NEAR(t->translation[2], 1.0, 1e-5);
@@ -164,18 +170,22 @@ TEST(Units, BrokenOrMissingTurretLeavesTheBody) {
 }
 
 TEST(GlbExport, EverySharedModelIsValidWithItsNodesAndAnimations) {
-    if (!fs::is_directory(kModels)) GTEST_SKIP() << "the shared models are absent: " << kModels;
+    if (!fs::is_directory(kModels))
+        GTEST_SKIP() << "the shared models are absent: " << kModels;
     const std::string dir = makeTempDir();
     std::vector<std::string> glbs;
     for (const std::string &folder : {kModels, kVoxModels})
         for (const auto &entry : fs::directory_iterator(folder)) {
             const std::string ext = entry.path().extension().string();
-            if (ext != ".vxl" && ext != ".vox") continue;
+            if (ext != ".vxl" && ext != ".vox")
+                continue;
             const std::string glb = dir + "/" + entry.path().stem().string() + ".glb";
             const MeshlabRun run = runMeshlabServer({"-i", entry.path().string(), "-o", glb});
-            if (run.output.find("there are no voxels to import") != std::string::npos) continue;  // art2tur
+            if (run.output.find("there are no voxels to import") != std::string::npos)
+                continue;  // art2tur
             EXPECT_TRUE(fs::exists(glb)) << run.output;
-            if (fs::exists(glb)) glbs.push_back(glb);
+            if (fs::exists(glb))
+                glbs.push_back(glb);
         }
     ASSERT_GT(glbs.size(), 15u);
     expectValid(glbs);
@@ -203,7 +213,8 @@ TEST(GlbExport, KeyframedVoxScenesBecomeValidAnimations) {
     }
     std::vector<VoxVoxel> block;
     for (uint8_t x = 0; x < 4; ++x)
-        for (uint8_t z = 0; z < 3; ++z) block.push_back({x, 0, z, uint8_t(1 + x)});
+        for (uint8_t z = 0; z < 3; ++z)
+            block.push_back({x, 0, z, uint8_t(1 + x)});
     const Bytes bytes = VoxWriter()
                             .model(4, 1, 3, block)
                             .transform(0, 1, {{}})

@@ -43,7 +43,8 @@ struct Cube {
     Cube() {
         for (int i = 0; i < 8; ++i)
             positions.emplace_back(i & 1, (i >> 1) & 1, (i >> 2) & 1);
-        const uint32_t quads[6][4] = {{1, 3, 7, 5}, {0, 4, 6, 2}, {2, 6, 7, 3}, {0, 1, 5, 4}, {4, 5, 7, 6}, {0, 2, 3, 1}};
+        const uint32_t quads[6][4] = {{1, 3, 7, 5}, {0, 4, 6, 2}, {2, 6, 7, 3},
+                                      {0, 1, 5, 4}, {4, 5, 7, 6}, {0, 2, 3, 1}};
         for (const auto &q : quads)
             for (uint32_t k : {q[0], q[1], q[2], q[0], q[2], q[3]})
                 triangles.push_back(k);
@@ -63,7 +64,7 @@ TEST(MeshRenderer, CubeShowsItsThreeFrontFacesOnTheBackground) {
     // ones are green, and no mix of the visible colours with the grey background is green.
     const Cube cube;
     const std::array<glm::u8vec3, 6> faceColour = {glm::u8vec3{255, 0, 0}, {0, 255, 0}, {20, 255, 20},
-                                                   {255, 0, 255},           {0, 0, 255}, {40, 255, 40}};
+                                                   {255, 0, 255},          {0, 0, 255}, {40, 255, 40}};
     std::vector<glm::u8vec3> triangleColours;
     for (const glm::u8vec3 &c : faceColour)
         triangleColours.insert(triangleColours.end(), 2, c);
@@ -83,8 +84,10 @@ TEST(MeshRenderer, CubeShowsItsThreeFrontFacesOnTheBackground) {
         EXPECT_EQ(image.pixel(corner.x, corner.y), options.background);
 
     // Each visible face's centre shows that face's hue, lit (neither black nor clipped white).
-    const struct { glm::vec3 centre; int face; } visible[] = {
-        {{1.0f, 0.5f, 0.5f}, 0}, {{0.5f, 0.0f, 0.5f}, 3}, {{0.5f, 0.5f, 1.0f}, 4}};
+    const struct {
+        glm::vec3 centre;
+        int face;
+    } visible[] = {{{1.0f, 0.5f, 0.5f}, 0}, {{0.5f, 0.0f, 0.5f}, 3}, {{0.5f, 0.5f, 1.0f}, 4}};
     for (const auto &v : visible) {
         const glm::ivec2 at = pixelOf(view, v.centre, image.width, image.height);
         const glm::u8vec3 p = image.pixel(at.x, at.y);
@@ -96,8 +99,10 @@ TEST(MeshRenderer, CubeShowsItsThreeFrontFacesOnTheBackground) {
         }
     }
     // The three faces are lit differently (the key light comes from above left).
-    const glm::u8vec3 right = image.pixel(pixelOf(view, visible[0].centre, 200, 200).x, pixelOf(view, visible[0].centre, 200, 200).y);
-    const glm::u8vec3 top = image.pixel(pixelOf(view, visible[2].centre, 200, 200).x, pixelOf(view, visible[2].centre, 200, 200).y);
+    const glm::u8vec3 right =
+        image.pixel(pixelOf(view, visible[0].centre, 200, 200).x, pixelOf(view, visible[0].centre, 200, 200).y);
+    const glm::u8vec3 top =
+        image.pixel(pixelOf(view, visible[2].centre, 200, 200).x, pixelOf(view, visible[2].centre, 200, 200).y);
     EXPECT_NE(right.r, top.b);
 
     size_t hidden = 0, model = 0;
@@ -133,8 +138,14 @@ TEST(MeshRenderer, FitViewFramesTheModelWithTheMargin) {
 
 TEST(MeshRenderer, NearerTriangleWinsWhateverTheDrawingOrder) {
     // Two squares facing +x (the eye), the red one nearer; drawn in both orders.
-    const std::vector<glm::vec3> positions = {{0, 0, 0}, {0, 1, 0}, {0, 1, 1}, {0, 0, 1},
-                                              {0.5f, 0.25f, 0.25f}, {0.5f, 0.75f, 0.25f}, {0.5f, 0.75f, 0.75f}, {0.5f, 0.25f, 0.75f}};
+    const std::vector<glm::vec3> positions = {{0, 0, 0},
+                                              {0, 1, 0},
+                                              {0, 1, 1},
+                                              {0, 0, 1},
+                                              {0.5f, 0.25f, 0.25f},
+                                              {0.5f, 0.75f, 0.25f},
+                                              {0.5f, 0.75f, 0.75f},
+                                              {0.5f, 0.25f, 0.75f}};
     const std::vector<glm::u8vec3> farFirst = {{0, 0, 255}, {0, 0, 255}, {255, 0, 0}, {255, 0, 0}};
     const std::vector<glm::u8vec3> nearFirst = {{255, 0, 0}, {255, 0, 0}, {0, 0, 255}, {0, 0, 255}};
     const std::vector<uint32_t> farThenNear = {0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7};

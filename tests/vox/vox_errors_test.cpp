@@ -102,7 +102,8 @@ TEST(VoxErrors, BadModelSize) {
 }
 
 TEST(VoxErrors, SizeWithoutVoxels) {
-    expectError(VoxWriter().size(1, 1, 1).bytes(), {"model 0: chunk 'SIZE' at byte 20 has no XYZI (or TDCZ) chunk after it"});
+    expectError(VoxWriter().size(1, 1, 1).bytes(),
+                {"model 0: chunk 'SIZE' at byte 20 has no XYZI (or TDCZ) chunk after it"});
     expectError(VoxWriter().size(1, 1, 1).size(1, 1, 1).xyzi({}).bytes(),
                 {"has no XYZI", "chunk 'SIZE' at byte 44 follows it"});
     expectError(VoxWriter().size(1, 1, 1).chunk("RGBA", Bytes(1024, 0)).bytes(),
@@ -116,13 +117,15 @@ TEST(VoxErrors, NoModel) {
 
 TEST(VoxErrors, TooManyColumns) {
     VoxWriter w;
-    for (int i = 0; i < 5; ++i) w.model(kMaxVolumeSide, kMaxVolumeSide, 1, {});
+    for (int i = 0; i < 5; ++i)
+        w.model(kMaxVolumeSide, kMaxVolumeSide, 1, {});
     expectError(w.bytes(), {"model 4 (2048 x 2048 x 1)", "over the limit of 16777216"});
 }
 
 TEST(VoxErrors, TooManyModels) {
     VoxWriter w;
-    for (int i = 0; i <= kMaxVoxModels; ++i) w.model(1, 1, 1, {});
+    for (int i = 0; i <= kMaxVoxModels; ++i)
+        w.model(1, 1, 1, {});
     expectError(w.bytes(), {"more than 65536 models"});
 }
 
@@ -180,7 +183,8 @@ TEST(VoxErrors, DuplicateNodeIdOrNoRoot) {
 
 TEST(VoxErrors, GraphTooDeep) {
     expectError(withGraph([](VoxWriter &w) {
-                    for (int i = 0; i < 300; ++i) w.group(i, {i + 1});
+                    for (int i = 0; i < 300; ++i)
+                        w.group(i, {i + 1});
                     w.shape(300, 0);
                 }),
                 {"the scene graph is 301 levels deep, over the limit of 256"});
@@ -189,7 +193,8 @@ TEST(VoxErrors, GraphTooDeep) {
 TEST(VoxErrors, GraphExpandsToTooManyInstances) {
     // Each group lists the next one twice: 2^21 paths from 22 nodes.
     expectError(withGraph([](VoxWriter &w) {
-                    for (int i = 0; i < 21; ++i) w.group(i, {i + 1, i + 1});
+                    for (int i = 0; i < 21; ++i)
+                        w.group(i, {i + 1, i + 1});
                     w.shape(21, 0);
                 }),
                 {"expands to more than 1048576 shape instances"});
@@ -246,7 +251,8 @@ TEST(VoxErrors, CorruptBytesNeverCrash) {
             b[i] = value;
             try {
                 const VoxFile file = readVox(b.data(), b.size());
-                for (int f = 0; f < std::min(file.frameCount, 4); ++f) voxScene(file, {f});
+                for (int f = 0; f < std::min(file.frameCount, 4); ++f)
+                    voxScene(file, {f});
             } catch (const FormatError &) {
             }
         }

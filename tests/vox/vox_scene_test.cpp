@@ -78,7 +78,8 @@ TEST(VoxScene, OneVoxelMeshesAsSixQuadsAroundThePivot) {
     EXPECT_EQ(surface.positions.size(), 8u);
     expectBounds(surface, glm::vec3(-1), glm::vec3(0));
     expectQuadsFaceAwayFrom(surface, glm::vec3(-0.5f));
-    for (const Rgb &c : surface.quadColours) EXPECT_EQ(c, file.palette.colours[3]);
+    for (const Rgb &c : surface.quadColours)
+        EXPECT_EQ(c, file.palette.colours[3]);
 }
 
 TEST(VoxScene, OddSidesPutThePivotAtTheCornerBelowTheCentre) {
@@ -155,7 +156,8 @@ TEST(VoxScene, InstancesOneModelSeveralTimes) {
     EXPECT_EQ(scene.parts[1].volume, &file.models[0]);
     EXPECT_EQ(scene.parts[2].volume, &file.models[0]);
     EXPECT_EQ(scene.parts[3].volume, &file.models[1]);
-    for (size_t i = 0; i < 4; ++i) EXPECT_EQ(scene.parts[i].part, int(i));
+    for (size_t i = 0; i < 4; ++i)
+        EXPECT_EQ(scene.parts[i].part, int(i));
     EXPECT_EQ(apply(scene.parts[0].toModel, {0, 0, 0}), glm::vec3(10, 0, 0));
     EXPECT_EQ(apply(scene.parts[1].toModel, {0, 0, 0}), glm::vec3(20, 0, 0));
     EXPECT_EQ(apply(scene.parts[2].toModel, {0, 0, 0}), glm::vec3(30, 0, 0));

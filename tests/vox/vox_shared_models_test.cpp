@@ -52,7 +52,8 @@ std::vector<uint8_t> load(const std::string &name) { return readFileBytes((voxFo
 }  // namespace
 
 TEST(VoxSharedModels, LoadWithTheExpectedFacts) {
-    if (!fs::is_directory(voxFolder())) GTEST_SKIP() << "shared models folder missing: " << voxFolder();
+    if (!fs::is_directory(voxFolder()))
+        GTEST_SKIP() << "shared models folder missing: " << voxFolder();
     for (const FileFacts &facts : kFiles) {
         SCOPED_TRACE(facts.name);
         const std::vector<uint8_t> bytes = load(facts.name);
@@ -70,7 +71,8 @@ TEST(VoxSharedModels, LoadWithTheExpectedFacts) {
 
         const VoxelScene scene = voxScene(file);
         ASSERT_EQ(scene.parts.size(), facts.instances);
-        for (size_t i = 0; i < facts.firstNames.size(); ++i) EXPECT_EQ(scene.parts[i].name, facts.firstNames[i]);
+        for (size_t i = 0; i < facts.firstNames.size(); ++i)
+            EXPECT_EQ(scene.parts[i].name, facts.firstNames[i]);
         size_t voxels = 0;
         glm::vec3 lo(INFINITY), hi(-INFINITY);
         for (const PlacedVolume &part : scene.parts) {
@@ -94,14 +96,14 @@ TEST(VoxSharedModels, LoadWithTheExpectedFacts) {
 }
 
 TEST(VoxSharedModels, TeardownCompressedModelsLoad) {
-    if (!fs::is_directory(voxFolder())) GTEST_SKIP() << "shared models folder missing: " << voxFolder();
+    if (!fs::is_directory(voxFolder()))
+        GTEST_SKIP() << "shared models folder missing: " << voxFolder();
     // teardown.vox stores its 8 models as TDCZ chunks; the solid voxels per model are those of an
     // independent reading (Python's zlib.decompressobj over each stream, non-zero bytes counted).
     const std::vector<uint8_t> bytes = load("teardown");
     const VoxFile file = readVox(bytes.data(), bytes.size());
-    const std::vector<ModelFacts> expected = {{10, 2, 13, 142}, {10, 9, 1, 86},   {4, 11, 11, 316},
-                                              {4, 11, 11, 316}, {4, 11, 11, 316}, {4, 11, 11, 316},
-                                              {4, 11, 11, 316}, {34, 54, 20, 9056}};
+    const std::vector<ModelFacts> expected = {{10, 2, 13, 142}, {10, 9, 1, 86},   {4, 11, 11, 316}, {4, 11, 11, 316},
+                                              {4, 11, 11, 316}, {4, 11, 11, 316}, {4, 11, 11, 316}, {34, 54, 20, 9056}};
     ASSERT_EQ(file.models.size(), expected.size());
     size_t total = 0;
     for (size_t m = 0; m < expected.size(); ++m) {

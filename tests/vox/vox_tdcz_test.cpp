@@ -62,8 +62,8 @@ TEST(VoxTdcz, GeneratedModelsReadLikeTheirXyziTwins) {
     std::mt19937 rng(12);
     for (int trial = 0; trial < 40; ++trial) {
         const DenseModel m = randomModel(rng);
-        SCOPED_TRACE("trial " + std::to_string(trial) + ": " + std::to_string(m.x) + "x" + std::to_string(m.y) +
-                     "x" + std::to_string(m.z));
+        SCOPED_TRACE("trial " + std::to_string(trial) + ": " + std::to_string(m.x) + "x" + std::to_string(m.y) + "x" +
+                     std::to_string(m.z));
         const Bytes xyzi = VoxWriter().model(m.x, m.y, m.z, m.sparse).bytes();
         const VoxFile expected = readVox(xyzi.data(), xyzi.size());
         for (bool finish : {false, true}) {
@@ -101,7 +101,8 @@ TEST(VoxTdcz, MixesWithXyziModelsInFileOrder) {
 TEST(VoxTdcz, CorruptOrShortStreamsAreClearErrors) {
     std::mt19937 rng(3);
     DenseModel m = randomModel(rng);
-    while (m.dense.size() < 200) m = randomModel(rng);
+    while (m.dense.size() < 200)
+        m = randomModel(rng);
     const Bytes good = tdczContent(m.x, m.y, m.z, m.dense);
 
     Bytes badHeader = good;

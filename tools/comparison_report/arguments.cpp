@@ -62,8 +62,9 @@ Inputs loadInputs(const fs::path &models, const std::vector<shapes::Shape> &shap
         bool companion = false;
         for (const char *suffix : {"tur", "barl"}) {
             const size_t n = std::strlen(suffix);
-            companion = companion || (stem.size() > n && stem.compare(stem.size() - n, n, suffix) == 0 &&
-                                      fs::exists(fs::path(path).parent_path() / (stem.substr(0, stem.size() - n) + ".vxl")));
+            companion =
+                companion || (stem.size() > n && stem.compare(stem.size() - n, n, suffix) == 0 &&
+                              fs::exists(fs::path(path).parent_path() / (stem.substr(0, stem.size() - n) + ".vxl")));
         }
         if (companion)
             continue;
@@ -93,8 +94,9 @@ Inputs loadInputs(const fs::path &models, const std::vector<shapes::Shape> &shap
     }
 
     if (!only.empty())
-        inputs.erase(std::remove_if(inputs.begin(), inputs.end(), [&](const Input &in) { return in.model->name != only; }),
-                     inputs.end());
+        inputs.erase(
+            std::remove_if(inputs.begin(), inputs.end(), [&](const Input &in) { return in.model->name != only; }),
+            inputs.end());
     return result;
 }
 

@@ -69,7 +69,8 @@ Pictures renderPictures(const ModelRun &run, const fs::path &folder, int size) {
         RenderMesh textured = meshOf(run.ours);
         textured.vertexNormals = run.ours.displayNormals.data();
         textured.wedgeUv = run.ours.atlas.layout.wedgeUv.data();
-        textured.texture = {run.ours.atlas.texture.width, run.ours.atlas.texture.height, run.ours.atlas.texture.rgba.data()};
+        textured.texture = {run.ours.atlas.texture.width, run.ours.atlas.texture.height,
+                            run.ours.atlas.texture.rgba.data()};
         add(renderMesh(textured, view, options), "textured", "ours + atlas texture, smooth normals");
         out.texture = stem + "_texture.png";
         const AtlasTexture &t = run.ours.atlas.texture;

@@ -11,7 +11,7 @@
 namespace voxelfair::report {
 
 struct Pictures {
-    std::vector<std::string> files;   // panel files, in panel order
+    std::vector<std::string> files;  // panel files, in panel order
     std::vector<std::string> labels;
     std::string strip, texture, wireframe;
 };

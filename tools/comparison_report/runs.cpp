@@ -27,7 +27,8 @@ double bestMs(int repeats, Make make, Run run) {
 // Best of `repeats` timed runs of a stage that needs no fresh input.
 template <class Run>
 double bestMs(int repeats, Run run) {
-    return bestMs(repeats, [] { return 0; }, [&](int) { run(); });
+    return bestMs(
+        repeats, [] { return 0; }, [&](int) { run(); });
 }
 
 // Attribute smoothing and, when asked, the atlas for a smoothed surface, timed; then the surface
@@ -60,18 +61,22 @@ ModelRun runChain(const pipeline::Model &model, const std::string &kind) {
     finishVariant(run.raw, model, false);
 
     run.ours.name = "ours (paper, 1 pass)";
-    run.ours.smoothMs = bestMs(kRepeats, [&] { return run.raw.mesh; }, [&](pipeline::QuadMesh &m) {
-        pipeline::fair(m);
-        run.ours.mesh = std::move(m);
-    });
+    run.ours.smoothMs = bestMs(
+        kRepeats, [&] { return run.raw.mesh; },
+        [&](pipeline::QuadMesh &m) {
+            pipeline::fair(m);
+            run.ours.mesh = std::move(m);
+        });
     finishVariant(run.ours, model, true);
 
     run.hasConstrained = true;
     run.constrained.name = "constrained";
-    run.constrained.smoothMs = bestMs(kRepeats, [&] { return run.raw.mesh; }, [&](pipeline::QuadMesh &m) {
-        pipeline::fairConstrainedMode(m);
-        run.constrained.mesh = std::move(m);
-    });
+    run.constrained.smoothMs = bestMs(
+        kRepeats, [&] { return run.raw.mesh; },
+        [&](pipeline::QuadMesh &m) {
+            pipeline::fairConstrainedMode(m);
+            run.constrained.mesh = std::move(m);
+        });
     finishVariant(run.constrained, model, true);
 
 #ifdef VOXELFAIR_HAVE_VCGLIB
@@ -79,19 +84,23 @@ ModelRun runChain(const pipeline::Model &model, const std::string &kind) {
     run.hasTaubin = true;
     run.taubin.name = "Taubin (10 steps)";
     run.taubin.mesh = run.raw.mesh;
-    run.taubinToVcgMs = bestMs(kRepeats, [] { return std::make_unique<vcgtaubin::Mesh>(); },
-                               [&](std::unique_ptr<vcgtaubin::Mesh> &m) {
-                                   vcgtaubin::build(*m, run.raw.mesh.positions, run.raw.attributes.triangles);
-                               });
+    run.taubinToVcgMs = bestMs(
+        kRepeats, [] { return std::make_unique<vcgtaubin::Mesh>(); },
+        [&](std::unique_ptr<vcgtaubin::Mesh> &m) {
+            vcgtaubin::build(*m, run.raw.mesh.positions, run.raw.attributes.triangles);
+        });
     std::unique_ptr<vcgtaubin::Mesh> smoothed;
-    run.taubin.smoothMs = bestMs(kRepeats, [&] {
-        auto m = std::make_unique<vcgtaubin::Mesh>();
-        vcgtaubin::build(*m, run.raw.mesh.positions, run.raw.attributes.triangles);
-        return m;
-    }, [&](std::unique_ptr<vcgtaubin::Mesh> &m) {
-        vcgtaubin::taubinLikeMeshLab(*m);
-        smoothed = std::move(m);
-    });
+    run.taubin.smoothMs = bestMs(
+        kRepeats,
+        [&] {
+            auto m = std::make_unique<vcgtaubin::Mesh>();
+            vcgtaubin::build(*m, run.raw.mesh.positions, run.raw.attributes.triangles);
+            return m;
+        },
+        [&](std::unique_ptr<vcgtaubin::Mesh> &m) {
+            vcgtaubin::taubinLikeMeshLab(*m);
+            smoothed = std::move(m);
+        });
     for (size_t i = 0; i < run.taubin.mesh.positions.size(); ++i) {
         const vcg::Point3f &p = smoothed->vert[i].cP();
         run.taubin.mesh.positions[i] = glm::vec3(p[0], p[1], p[2]);

@@ -31,7 +31,7 @@ struct ModelRun {
     std::string palette;
     size_t boxVoxels = 0, solidVoxels = 0, parts = 0;
     double extractMs = 0;
-    double taubinToVcgMs = 0;  // building vcglib's mesh, which MeshLab already holds
+    double taubinToVcgMs = 0;                             // building vcglib's mesh, which MeshLab already holds
     Variant raw, ours, taubin, constrained, hc, twoStep;  // hc, twoStep: MeshLab's (smoother_lineup.h)
     bool hasTaubin = false, hasConstrained = false, hasOtherMeshLab = false, hasVtk = false;
     lineup::TriangleSurface vtk;

@@ -49,7 +49,9 @@ struct ScreenVertex {
     bool valid = false;
 };
 
-float edgeFunction(glm::vec2 a, glm::vec2 b, glm::vec2 p) { return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x); }
+float edgeFunction(glm::vec2 a, glm::vec2 b, glm::vec2 p) {
+    return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+}
 
 }  // namespace
 
@@ -214,11 +216,13 @@ Image renderMesh(const RenderMesh &mesh, const View &view, const RenderOptions &
                     if (sl > 1e-6f)
                         n = s / sl;
                 }
-                const glm::vec3 toEye = glm::normalize(-(q[0] * v[0]->camera + q[1] * v[1]->camera + q[2] * v[2]->camera));
+                const glm::vec3 toEye =
+                    glm::normalize(-(q[0] * v[0]->camera + q[1] * v[1]->camera + q[2] * v[2]->camera));
                 const float lambert = std::max(0.0f, glm::dot(n, toLight));
                 const glm::vec3 halfway = glm::normalize(toLight + toEye);
                 const float highlight =
-                    lambert > 0.0f ? light.specular * std::pow(std::max(0.0f, glm::dot(n, halfway)), light.shininess) : 0.0f;
+                    lambert > 0.0f ? light.specular * std::pow(std::max(0.0f, glm::dot(n, halfway)), light.shininess)
+                                   : 0.0f;
                 glm::vec3 shaded = albedo * (light.ambient + light.diffuse * lambert) + glm::vec3(255.0f * highlight);
 
                 if (edges) {
@@ -250,7 +254,8 @@ Image renderMesh(const RenderMesh &mesh, const View &view, const RenderOptions &
                 for (int sy = 0; sy < ss; ++sy)
                     for (int sx = 0; sx < ss; ++sx)
                         sum += colour[(size_t(y * ss + sy) * size_t(W) + size_t(x * ss + sx)) * 3 + size_t(c)];
-                image.rgb[(size_t(y) * size_t(width) + size_t(x)) * 3 + size_t(c)] = uint8_t((sum + samples / 2) / samples);
+                image.rgb[(size_t(y) * size_t(width) + size_t(x)) * 3 + size_t(c)] =
+                    uint8_t((sum + samples / 2) / samples);
             }
     return image;
 }

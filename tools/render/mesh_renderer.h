@@ -99,7 +99,7 @@ struct RenderOptions {
     glm::u8vec3 background{232, 232, 228};
     Lighting lighting;
     glm::u8vec3 wireColour{25, 25, 30};
-    float wireWidth = 1.0f;    // in output pixels
+    float wireWidth = 1.0f;  // in output pixels
     float wireOpacity = 0.75f;
 };
 

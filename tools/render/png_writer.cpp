@@ -54,19 +54,18 @@ std::vector<uint8_t> encodePng(const uint8_t *pixels, int width, int height, int
     std::vector<uint8_t> header;
     putU32(header, uint32_t(width));
     putU32(header, uint32_t(height));
-    header.push_back(8);                            // bit depth
-    header.push_back(channels == 4 ? 6 : 2);        // colour type: RGBA or RGB
-    header.push_back(0);                            // deflate
-    header.push_back(0);                            // adaptive filtering
-    header.push_back(0);                            // no interlace
+    header.push_back(8);                      // bit depth
+    header.push_back(channels == 4 ? 6 : 2);  // colour type: RGBA or RGB
+    header.push_back(0);                      // deflate
+    header.push_back(0);                      // adaptive filtering
+    header.push_back(0);                      // no interlace
     putChunk(out, "IHDR", header.data(), header.size());
     putChunk(out, "IDAT", packed.data(), packedSize);
     putChunk(out, "IEND", nullptr, 0);
     return out;
 }
 
-bool writePng(const std::string &path, const uint8_t *pixels, int width, int height, int channels,
-              std::string *error) {
+bool writePng(const std::string &path, const uint8_t *pixels, int width, int height, int channels, std::string *error) {
     const std::vector<uint8_t> bytes = encodePng(pixels, width, height, channels);
     if (bytes.empty()) {
         if (error)

@@ -39,7 +39,7 @@ VOXELFAIR_NOINLINE void buildCorners(FairingState<kQuads> &s) {
     const uint32_t cornerCount = s.cornerCount, *const indices = s.indices;
     const uint8_t *const live = s.live;
     uint32_t *const start = s.vertexStart, *const corners = s.vertexCorners, *const next = s.vertexNext,
-                   *const previous = s.vertexPrevious;
+                    *const previous = s.vertexPrevious;
     std::fill(start, start + V + 2, 0u);
     for (uint32_t c = 0; c < cornerCount; ++c)
         start[indices[c] + 2] += live[k.polygonOf(c)];

@@ -122,9 +122,7 @@ struct FairingState {
         return m2 != kNone && k.inQuad(m2) ? m2 : kNone;
     }
     // Step 3's s = n + n_u for the edge to u (a neighbour that is not free lends n).
-    glm::vec3 edgeTerm(const glm::vec3 &n, uint32_t u) const {
-        return n + (isFree(kind[u]) ? vertexNormal[u].n : n);
-    }
+    glm::vec3 edgeTerm(const glm::vec3 &n, uint32_t u) const { return n + (isFree(kind[u]) ? vertexNormal[u].n : n); }
 
     glm::vec3 *const positions;
     const glm::vec3 *const input;  // positions stay the input until finish()
@@ -142,8 +140,8 @@ struct FairingState {
     VertexKind *kind = nullptr;
     uint8_t *live = nullptr;
     glm::vec3 *normal = nullptr, *filtered = nullptr;  // P + 2: [P] (and [P + 1]) stay zero
-    uint32_t *vertexStart = nullptr;  // CSR of the corners of live polygons at each vertex:
-    uint32_t *vertexNext = nullptr;   // their next vertices (8 more entries: see buildCorners),
+    uint32_t *vertexStart = nullptr;                   // CSR of the corners of live polygons at each vertex:
+    uint32_t *vertexNext = nullptr;                    // their next vertices (8 more entries: see buildCorners),
     uint32_t *vertexCorners = nullptr, *vertexPrevious = nullptr;  // and, while building, the rest
     uint32_t *twin = nullptr;  // then step 2's level 0, and the tables of levels 1.. after it
     uint8_t *edgeFlags = nullptr;
@@ -158,8 +156,8 @@ struct FairingState {
     uint32_t *vertexAt = nullptr;          // free slot -> vertex, kNone when empty
     uint32_t *slotNeighbours = nullptr;    // kRegularValence byte offsets per free slot
     Offset *offset = nullptr;
-    FitBlock *fit = nullptr;               // per block of four free slots
-    uint8_t *regularBlock = nullptr;       // per block: all its vertices Free (moveFreeBlock)
+    FitBlock *fit = nullptr;          // per block of four free slots
+    uint8_t *regularBlock = nullptr;  // per block: all its vertices Free (moveFreeBlock)
 
     // plane_regions.cpp: free vertices held at a fixed offset, lending a normal to their neighbours.
     std::vector<uint32_t> anchored;
@@ -167,25 +165,39 @@ struct FairingState {
 };
 
 // The stages (explicitly instantiated for both kQuads in their files).
-template <bool kQuads> bool findNormals(FairingState<kQuads> &s);
-template <bool kQuads> void findFairedNormals(FairingState<kQuads> &s);
-template <bool kQuads> void buildCorners(FairingState<kQuads> &s);
+template <bool kQuads>
+bool findNormals(FairingState<kQuads> &s);
+template <bool kQuads>
+void findFairedNormals(FairingState<kQuads> &s);
+template <bool kQuads>
+void buildCorners(FairingState<kQuads> &s);
 template <bool kQuads>
 void classifyEdges(const Polygons<kQuads> &k, const uint32_t *twin, const glm::vec3 *positions,
                    const glm::vec3 *unitNormal, const ConstrainedFairingOptions &options, size_t vertexCount,
                    const uint32_t *creases, size_t creaseCount, uint8_t *flags, std::vector<uint32_t> &sharpBoundary,
                    std::vector<uint32_t> &sharpCreases, ConstrainedFairingReport &report);
-template <bool kQuads> void findVertexKinds(FairingState<kQuads> &s);
-template <bool kQuads> void buildLevels(FairingState<kQuads> &s);
-template <bool kQuads> void filterNormals(FairingState<kQuads> &s, int levels);
-template <bool kQuads> void findPlaneRegions(FairingState<kQuads> &s);
-template <bool kQuads> void buildSlots(FairingState<kQuads> &s);
-template <bool kQuads> void lendAnchorNormals(FairingState<kQuads> &s);
-template <bool kQuads> void holdAnchors(FairingState<kQuads> &s);
-template <bool kQuads> void removeDrift(FairingState<kQuads> &s, int rounds);
-template <bool kQuads> void fitFreeVertices(FairingState<kQuads> &s);
-template <bool kQuads> void sweep(FairingState<kQuads> &s, bool forward);
-template <bool kQuads> void finish(FairingState<kQuads> &s);
+template <bool kQuads>
+void findVertexKinds(FairingState<kQuads> &s);
+template <bool kQuads>
+void buildLevels(FairingState<kQuads> &s);
+template <bool kQuads>
+void filterNormals(FairingState<kQuads> &s, int levels);
+template <bool kQuads>
+void findPlaneRegions(FairingState<kQuads> &s);
+template <bool kQuads>
+void buildSlots(FairingState<kQuads> &s);
+template <bool kQuads>
+void lendAnchorNormals(FairingState<kQuads> &s);
+template <bool kQuads>
+void holdAnchors(FairingState<kQuads> &s);
+template <bool kQuads>
+void removeDrift(FairingState<kQuads> &s, int rounds);
+template <bool kQuads>
+void fitFreeVertices(FairingState<kQuads> &s);
+template <bool kQuads>
+void sweep(FairingState<kQuads> &s, bool forward);
+template <bool kQuads>
+void finish(FairingState<kQuads> &s);
 
 }  // namespace VOXELFAIR_SIMD_VARIANT
 }  // namespace voxelfair::constrained

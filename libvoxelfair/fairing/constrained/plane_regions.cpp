@@ -223,8 +223,8 @@ VOXELFAIR_NOINLINE void findPlaneRegions(FairingState<kQuads> &s) {
             for (uint32_t f : faces)
                 centre += q.m[f];
             centre /= double(faces.size());
-            const glm::dvec3 u = glm::normalize(glm::cross(plane.n, std::fabs(plane.n.x) < 0.9 ? glm::dvec3(1, 0, 0)
-                                                                                                : glm::dvec3(0, 1, 0)));
+            const glm::dvec3 u = glm::normalize(
+                glm::cross(plane.n, std::fabs(plane.n.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
             const glm::dvec3 v = glm::cross(plane.n, u);
             double uu = 0, vv = 0, uv = 0, sx = 0, sxx = 0, sy = 0, sxy = 0;
             for (uint32_t f : faces) {
@@ -371,9 +371,9 @@ VOXELFAIR_NOINLINE void findPlaneRegions(FairingState<kQuads> &s) {
                 const int32_t a = region[p], b = region[t >> 2];
                 if (a < 0 && b < 0)
                     continue;
-                const bool apart = (a >= 0 && b >= 0)
-                                       ? a != b
-                                       : glm::dot(glm::dvec3(q.g[a >= 0 ? t >> 2 : p]), planes[a >= 0 ? a : b].n) < cutCos;
+                const bool apart = (a >= 0 && b >= 0) ? a != b
+                                                      : glm::dot(glm::dvec3(q.g[a >= 0 ? t >> 2 : p]),
+                                                                 planes[a >= 0 ? a : b].n) < cutCos;
                 if (apart) {
                     twin[c] = kNone;
                     cut = true;
