@@ -46,7 +46,9 @@ void BM_BakeNormalMap(benchmark::State &state) {
     const NormalBakeMesh source = bakeView(p.hi.positions, p.hi.normals, p.hi.triangles, p.hi.wedgeUv);
     const NormalBakeMesh target = bakeView(p.lo.positions, p.lo.normals, p.lo.triangles, p.lo.wedgeUv);
     NormalBakeOptions options;
-    options.size = p.hi.textureSize;
+    options.width = p.hi.textureWidth;
+    options.height = p.hi.textureHeight;
+    options.threads = int(state.range(0));
     NormalMap map;
     for (auto _ : state) {
         map = bakeNormalMap(source, target, options);
@@ -54,10 +56,13 @@ void BM_BakeNormalMap(benchmark::State &state) {
     }
     state.counters["source_faces"] = double(p.hi.faceCount());
     state.counters["target_faces"] = double(p.lo.faceCount());
-    state.counters["size"] = map.size;
+    state.counters["width"] = map.width;
+    state.counters["height"] = map.height;
     state.counters["texels"] = double(map.texelsBaked);
 }
-BENCHMARK(BM_BakeNormalMap)->Unit(benchmark::kMillisecond);
+// Arg: threads (0 = one per hardware thread). Wall time (the goal) and the process' CPU time of
+// all threads.
+BENCHMARK(BM_BakeNormalMap)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 
 void BM_MikkTSpace(benchmark::State &state, bool decimated) {
     const Prepared &p = prepared();

@@ -190,9 +190,9 @@ void FilterVoxelfairPlugin::initParameterSet(QAction *action, MeshDocument &md, 
     parameters.addParam(
         RichString("normalFile", md.mm() ? defaultNormalMapName(*md.mm()) : QString("voxelfair_normal.png"),
                    "Normal map file", "The PNG to write: a relative name is put beside the mesh's file."));
-    parameters.addParam(
-        RichInt("textureSize", 0, "Texture size",
-                "Side of the normal map in texels; 0 takes the base colour texture's (the atlas' layout)."));
+    parameters.addParam(RichInt("textureSize", 0, "Texture size",
+                                "Side of a square normal map in texels; 0 takes the base colour texture's width x "
+                                "height (the atlas' layout)."));
     parameters.addParam(RichInt("dilation", 2, "Gutter rings",
                                 "Rings of texels filled around the charts, as the base colour's (half its gutter)."));
 }

@@ -121,11 +121,12 @@ bool FilterVoxelfairPlugin::applyNormalMap(MeshDocument &md, const RichParameter
     const QString path = besideMesh(target, parameters.getString("normalFile").trimmed().isEmpty()
                                                 ? normalNameFor(target)
                                                 : parameters.getString("normalFile").trimmed());
-    int size = parameters.getInt("textureSize");
+    int width = parameters.getInt("textureSize"), height = width;
     QString sizeFrom = "given";
-    if (size <= 0) {
-        // The base colour's side: its PNG beside the normal map (where the pipeline writes both),
-        // else beside the mesh.
+    if (width <= 0) {
+        // The base colour's size: its PNG beside the normal map (where the pipeline writes both),
+        // else beside the mesh. UVs are normalised per axis, so a wide (2:1) atlas gets a 2:1 map
+        // with the base colour's texel density.
         if (target.cm.textures.empty())
             return fail("Bake Normal Map: the current layer has no texture; give the texture size");
         const QString name = QString::fromStdString(target.cm.textures.front());
@@ -137,9 +138,8 @@ bool FilterVoxelfairPlugin::applyNormalMap(MeshDocument &md, const RichParameter
             return fail(
                 QString("Bake Normal Map: could not read the size of the base colour texture %1; give the texture size")
                     .arg(texture));
-        // A wide atlas (2:1) gets a square map at its longer side: UVs are normalised per axis, so
-        // the layout is the same, with more texels along v.
-        size = std::max(imageSize.width(), imageSize.height());
+        width = imageSize.width();
+        height = imageSize.height();
         sizeFrom = QFileInfo(texture).fileName();
     }
 
@@ -147,7 +147,8 @@ bool FilterVoxelfairPlugin::applyNormalMap(MeshDocument &md, const RichParameter
     readBakeArrays(target.cm, low);
     readBakeArrays(source->cm, high);
     NormalBakeOptions options;
-    options.size = size;
+    options.width = width;
+    options.height = height;
     options.dilation = parameters.getInt("dilation");
     if (cb)
         cb(10, "Baking the normal map");
@@ -157,7 +158,7 @@ bool FilterVoxelfairPlugin::applyNormalMap(MeshDocument &md, const RichParameter
 
     if (cb)
         cb(80, "Writing the normal map");
-    const QImage image(map.rgba.data(), map.size, map.size, map.size * 4, QImage::Format_RGBA8888);
+    const QImage image(map.rgba.data(), map.width, map.height, map.width * 4, QImage::Format_RGBA8888);
     if (!QDir().mkpath(QFileInfo(path).absolutePath()) ||
         !image.convertToFormat(QImage::Format_RGB888).save(path, "PNG"))
         return fail(QString("Bake Normal Map: could not write the normal map to %1").arg(path));
@@ -168,13 +169,13 @@ bool FilterVoxelfairPlugin::applyNormalMap(MeshDocument &md, const RichParameter
     if (restoreParts(target, *source))
         report(
             "Bake Normal Map: the parts of the source layer (nodes, each face's part) restored on the current layer");
-    report(QString("Bake Normal Map: %1 texels from layer '%2' (%3 faces) onto %4 faces, %5 x %5 (size from %6), "
+    report(QString("Bake Normal Map: %1 texels from layer '%2' (%3 faces) onto %4 faces, %5 (size from %6), "
                    "MikkTSpace tangents, %7 gutter rings -> %8 in %9 ms")
                .arg(map.texelsBaked)
                .arg(source->label())
                .arg(source->cm.fn)
                .arg(target.cm.fn)
-               .arg(map.size)
+               .arg(QString("%1 x %2").arg(map.width).arg(map.height))
                .arg(sizeFrom)
                .arg(options.dilation)
                .arg(path)

@@ -140,11 +140,11 @@ void rasterConservative(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double margin,
     });
 }
 
-// Calls visit(x, y) for every texel inside [0, width) x [0, height) whose centre lies inside the
-// triangle; centres exactly on an edge follow the top-left rule, so the triangles of a planar,
-// non-overlapping mesh cover every centre at most once.
-template <class Visit>
-void rasterCentres(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, int width, int height, Visit &&visit) {
+// Calls visitSpan(y, x0, x1) for every row y of [0, width) x [0, height) with texels whose centre
+// lies inside the triangle: those are x0..x1. Centres exactly on an edge follow the top-left
+// rule, so the triangles of a planar, non-overlapping mesh cover every centre at most once.
+template <class VisitSpan>
+void rasterCentreSpans(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, int width, int height, VisitSpan &&visitSpan) {
     raster_detail::Setup s;
     if (!raster_detail::setup(a, b, c, s))
         return;
@@ -165,7 +165,13 @@ void rasterCentres(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, int width, int heig
         return true;
     };
     const double reach[3] = {0, 0, 0};
-    raster_detail::spans(s, reach, x0, x1, y0, y1, inside, [&](int y, int xl, int xr) {
+    raster_detail::spans(s, reach, x0, x1, y0, y1, inside, visitSpan);
+}
+
+// The same texels one by one: visit(x, y).
+template <class Visit>
+void rasterCentres(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, int width, int height, Visit &&visit) {
+    rasterCentreSpans(a, b, c, width, height, [&](int y, int xl, int xr) {
         for (int x = xl; x <= xr; ++x)
             visit(x, y);
     });

@@ -3,11 +3,14 @@
 
 #include "atlas/texel_raster.h"
 #include "maps/mikktspace.h"
+#include "maps/parallel_bands.h"
 #include "maps/surface_walk.h"
 #include "maps/texel_dilation.h"
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <thread>
 
 #include <glm/geometric.hpp>
 
@@ -15,7 +18,6 @@ namespace voxelfair {
 
 namespace {
 
-enum : uint8_t { kEmpty = 0, kCentre = 1, kEdge = 2 };
 constexpr double kMargin = -1.0 / 256;  // the base colour bake's overlap rule (atlas/bake.cpp)
 
 bool validate(const NormalBakeMesh &m, const char *what, std::string &message) {
@@ -35,9 +37,9 @@ bool validate(const NormalBakeMesh &m, const char *what, std::string &message) {
     return true;
 }
 
-void loadUv(const NormalBakeMesh &m, size_t f, double side, glm::dvec2 q[3]) {
+void loadUv(const NormalBakeMesh &m, size_t f, int width, int height, glm::dvec2 q[3]) {
     for (int k = 0; k < 3; ++k)
-        q[k] = glm::dvec2(m.wedgeUv[3 * f + size_t(k)]) * side;
+        q[k] = glm::dvec2(m.wedgeUv[3 * f + size_t(k)]) * glm::dvec2(width, height);
 }
 
 uint8_t encode(float c) { return uint8_t(std::clamp(std::lround((c * 0.5f + 0.5f) * 255.0f), 0L, 255L)); }
@@ -70,22 +72,24 @@ glm::vec3 applyNormalMapTexel(glm::vec3 texel, glm::vec3 n, glm::vec4 t) {
 namespace {
 
 // Source faces by the texel-space boxes of their UV triangles, in cells of 16 x 16 texels: where
-// a target face's walk starts (the source face under the same UV).
+// a texel's walk starts (the source face under the same UV).
 class UvFaceGrid {
 public:
-    UvFaceGrid(const NormalBakeMesh &m, int size) : mesh_(m), size_(size), cells_((size + kCell - 1) / kCell) {
-        start_.assign(size_t(cells_) * size_t(cells_) + 1, 0);
+    UvFaceGrid(const NormalBakeMesh &m, int width, int height)
+        : mesh_(m), width_(width), height_(height), cellsX_((width + kCell - 1) / kCell),
+          cellsY_((height + kCell - 1) / kCell) {
+        start_.assign(size_t(cellsX_) * size_t(cellsY_) + 1, 0);
         auto forCells = [&](size_t f, auto &&visit) {
             glm::dvec2 q[3];
-            loadUv(m, f, size, q);
+            loadUv(m, f, width, height, q);
             const glm::dvec2 lo = glm::min(q[0], glm::min(q[1], q[2])), hi = glm::max(q[0], glm::max(q[1], q[2]));
-            const int x0 = std::clamp(int(lo.x) / kCell, 0, cells_ - 1),
-                      x1 = std::clamp(int(hi.x) / kCell, 0, cells_ - 1);
-            const int y0 = std::clamp(int(lo.y) / kCell, 0, cells_ - 1),
-                      y1 = std::clamp(int(hi.y) / kCell, 0, cells_ - 1);
+            const int x0 = std::clamp(int(lo.x) / kCell, 0, cellsX_ - 1),
+                      x1 = std::clamp(int(hi.x) / kCell, 0, cellsX_ - 1);
+            const int y0 = std::clamp(int(lo.y) / kCell, 0, cellsY_ - 1),
+                      y1 = std::clamp(int(hi.y) / kCell, 0, cellsY_ - 1);
             for (int y = y0; y <= y1; ++y)
                 for (int x = x0; x <= x1; ++x)
-                    visit(size_t(y) * size_t(cells_) + size_t(x));
+                    visit(size_t(y) * size_t(cellsX_) + size_t(x));
         };
         for (size_t f = 0; f < m.faceCount; ++f)
             forCells(f, [&](size_t c) { ++start_[c + 1]; });
@@ -99,13 +103,13 @@ public:
     // The source face whose UV triangle holds texel-space point p, else the one whose UV centroid
     // is nearest among those of p's cell; UINT32_MAX when the cell is empty.
     uint32_t find(glm::dvec2 p) const {
-        const int cx = std::clamp(int(p.x) / kCell, 0, cells_ - 1), cy = std::clamp(int(p.y) / kCell, 0, cells_ - 1);
-        const size_t c = size_t(cy) * size_t(cells_) + size_t(cx);
+        const int cx = std::clamp(int(p.x) / kCell, 0, cellsX_ - 1), cy = std::clamp(int(p.y) / kCell, 0, cellsY_ - 1);
+        const size_t c = size_t(cy) * size_t(cellsX_) + size_t(cx);
         uint32_t nearest = UINT32_MAX;
         double best = 0;
         glm::dvec2 q[3];
         for (uint32_t i = start_[c]; i < start_[c + 1]; ++i) {
-            loadUv(mesh_, faces_[i], size_, q);
+            loadUv(mesh_, faces_[i], width_, height_, q);
             const double d = doubleArea(q[0], q[1], q[2]);
             const double a = doubleArea(p, q[1], q[2]) / d, b = doubleArea(q[0], p, q[2]) / d;
             if (d != 0 && a >= 0 && b >= 0 && a + b <= 1)
@@ -121,11 +125,99 @@ public:
 private:
     static constexpr int kCell = 16;
     const NormalBakeMesh &mesh_;
-    int size_, cells_;
+    int width_, height_, cellsX_, cellsY_;
     std::vector<uint32_t> start_, faces_;
 };
 
 inline uint8_t encodeFast(float c) { return uint8_t(std::clamp(int(c * 127.5f + 128.0f), 0, 255)); }
+
+constexpr int kBandRows = 32;
+constexpr uint8_t kFromSource = 2;  // a state bit beside kTexelPainted (texel_dilation.h)
+
+// Target faces by the bands of rows their UV triangles may touch (conservatively), in face order.
+struct FaceBands {
+    std::vector<uint32_t> start, faces;
+};
+
+FaceBands faceBands(const NormalBakeMesh &target, int width, int height) {
+    const size_t bands = size_t((height + kBandRows - 1) / kBandRows);
+    FaceBands out;
+    out.start.assign(bands + 1, 0);
+    auto range = [&](size_t f, size_t &b0, size_t &b1) {
+        glm::dvec2 q[3];
+        loadUv(target, f, width, height, q);
+        const double lo = std::min({q[0].y, q[1].y, q[2].y}), hi = std::max({q[0].y, q[1].y, q[2].y});
+        if (!std::isfinite(lo) || !std::isfinite(hi) || hi < -1 || lo > height + 1)
+            return false;
+        b0 = size_t(std::clamp(int(std::floor(lo)) - 1, 0, height - 1) / kBandRows);
+        b1 = size_t(std::clamp(int(std::ceil(hi)) + 1, 0, height - 1) / kBandRows);
+        return true;
+    };
+    size_t b0 = 0, b1 = 0;
+    for (size_t f = 0; f < target.faceCount; ++f)
+        if (range(f, b0, b1))
+            for (size_t b = b0; b <= b1; ++b)
+                ++out.start[b + 1];
+    for (size_t b = 0; b < bands; ++b)
+        out.start[b + 1] += out.start[b];
+    out.faces.resize(out.start.back());
+    std::vector<uint32_t> fill(out.start.begin(), out.start.end() - 1);
+    for (size_t f = 0; f < target.faceCount; ++f)
+        if (range(f, b0, b1))
+            for (size_t b = b0; b <= b1; ++b)
+                out.faces[fill[b]++] = uint32_t(f);
+    return out;
+}
+
+// The source with its faces renumbered by the atlas cell (kSortCell texels square) of their UV
+// centroid, cells row by row (a counting sort): faces near in the atlas are near in memory, and
+// the source faces under a target face lie in a few runs the walk can fetch ahead.
+struct SortedSource {
+    static constexpr int kSortCell = 16;
+    std::vector<uint32_t> triangles;
+    std::vector<glm::vec2> wedgeUv;
+    int cellsX = 0, cellsY = 0;
+    std::vector<uint32_t> cellStart;  // the faces of cell c: [cellStart[c], cellStart[c + 1])
+    NormalBakeMesh mesh;
+
+    SortedSource(const NormalBakeMesh &source, int width, int height)
+        : triangles(3 * source.faceCount), wedgeUv(3 * source.faceCount), cellsX((width + kSortCell - 1) / kSortCell),
+          cellsY((height + kSortCell - 1) / kSortCell), cellStart(size_t(cellsX) * size_t(cellsY) + 1, 0),
+          mesh(source) {
+        std::vector<uint32_t> cellOf(source.faceCount);
+        for (size_t f = 0; f < source.faceCount; ++f) {
+            const glm::vec2 *uv = &source.wedgeUv[3 * f];
+            const glm::vec2 c = (uv[0] + uv[1] + uv[2]) / 3.0f;
+            cellOf[f] = cell(double(c.x) * width, double(c.y) * height);
+            ++cellStart[cellOf[f] + 1];
+        }
+        for (size_t c = 1; c < cellStart.size(); ++c)
+            cellStart[c] += cellStart[c - 1];
+        std::vector<uint32_t> fill(cellStart.begin(), cellStart.end() - 1);
+        for (size_t f = 0; f < source.faceCount; ++f) {
+            const size_t to = fill[cellOf[f]]++;
+            for (int k = 0; k < 3; ++k) {
+                triangles[3 * to + size_t(k)] = source.triangles[3 * f + size_t(k)];
+                wedgeUv[3 * to + size_t(k)] = source.wedgeUv[3 * f + size_t(k)];
+            }
+        }
+        mesh.triangles = triangles.data();
+        mesh.wedgeUv = wedgeUv.data();
+    }
+    uint32_t cell(double x, double y) const {
+        const int cx = std::isfinite(x) ? std::clamp(int(x / kSortCell), 0, cellsX - 1) : 0;
+        const int cy = std::isfinite(y) ? std::clamp(int(y / kSortCell), 0, cellsY - 1) : 0;
+        return uint32_t(cy) * uint32_t(cellsX) + uint32_t(cx);
+    }
+    // Calls run(first, last) for the faces whose centroid lies in the cells of the texel box.
+    template <class Run>
+    void forRuns(glm::dvec2 lo, glm::dvec2 hi, Run &&run) const {
+        const uint32_t a = cell(lo.x, lo.y), b = cell(hi.x, hi.y);
+        const uint32_t x0 = a % uint32_t(cellsX), x1 = b % uint32_t(cellsX);
+        for (uint32_t cy = a / uint32_t(cellsX); cy <= b / uint32_t(cellsX); ++cy)
+            run(cellStart[cy * uint32_t(cellsX) + x0], cellStart[cy * uint32_t(cellsX) + x1 + 1]);
+    }
+};
 
 }  // namespace
 
@@ -133,118 +225,172 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
     NormalMap out;
     if (!validate(source, "source", out.message) || !validate(target, "target", out.message))
         return out;
-    if (options.size < 1 || options.size > 16384) {
-        out.message = "the texture size must be between 1 and 16384 texels";
+    const int width = options.width, height = options.height > 0 ? options.height : options.width;
+    if (width < 1 || width > 16384 || height < 1 || height > 16384) {
+        out.message = "the texture's sides must be between 1 and 16384 texels";
         return out;
     }
-    const int size = options.size;
-    const size_t texels = size_t(size) * size_t(size);
-    out.size = size;
-    out.cornerTangents = targetTangents(target);
+    const size_t texels = size_t(width) * size_t(height);
+    out.width = width;
+    out.height = height;
 
-    const UvFaceGrid grid(source, size);
-    const SurfaceWalk walk(source.positions, source.triangles, source.faceCount, source.vertexCount);
-
-    // Flat normal (128, 128, 255) everywhere, then the target's texels.
-    out.rgba.resize(texels * 4);
+    // The target's tangents beside the source's search structures.
+    std::unique_ptr<SortedSource> sorted;
+    std::unique_ptr<UvFaceGrid> grid;
+    std::unique_ptr<SurfaceWalk> walk;
+    FaceBands bands, sourceBands;
     {
-        const uint32_t flat = 0xFFFF8080u;  // bytes 128, 128, 255, 255 in memory order
-        uint32_t *p = reinterpret_cast<uint32_t *>(out.rgba.data());
-        std::fill(p, p + texels, flat);
-    }
-    std::vector<uint8_t> state(texels, kEmpty);
-    std::vector<uint32_t> painted;
-    painted.reserve(texels / 4);
-    enum : uint8_t { kFromSource = 4 };
-
-    glm::dvec2 q[3];
-    for (size_t f = 0; f < target.faceCount; ++f) {
-        loadUv(target, f, size, q);
-        const double d = doubleArea(q[0], q[1], q[2]);
-        if (!(d != 0) || !std::isfinite(d))
-            continue;
-        // Barycentric weights as affine functions of the texel centre: l = l0 + lx x + ly y.
-        const double a1 = (q[2].y - q[0].y) / d, b1 = -(q[2].x - q[0].x) / d;
-        const double a2 = -(q[1].y - q[0].y) / d, b2 = (q[1].x - q[0].x) / d;
-        glm::vec3 tp[3], tn[3], tt[3];
-        float w = 0.0f;
-        for (int k = 0; k < 3; ++k) {
-            const uint32_t v = target.triangles[3 * f + size_t(k)];
-            tp[k] = target.positions[v];
-            tn[k] = target.normals[v];
-            tt[k] = glm::vec3(out.cornerTangents[3 * f + size_t(k)]);
-            w += out.cornerTangents[3 * f + size_t(k)].w;
+        auto structures = [&] {
+            sorted = std::make_unique<SortedSource>(source, width, height);
+            grid = std::make_unique<UvFaceGrid>(sorted->mesh, width, height);
+            walk = std::make_unique<SurfaceWalk>(source.positions, source.normals, sorted->triangles.data(),
+                                                 source.faceCount, source.vertexCount);
+            sourceBands = faceBands(sorted->mesh, width, height);
+        };
+        if (bandThreads(options.threads, 2) > 1) {
+            std::thread other(structures);
+            out.cornerTangents = targetTangents(target);
+            bands = faceBands(target, width, height);
+            other.join();
+        } else {
+            structures();
+            out.cornerTangents = targetTangents(target);
+            bands = faceBands(target, width, height);
         }
-        const float sign = w < 0.0f ? -1.0f : 1.0f;
-        uint32_t hitFace = grid.find((q[0] + q[1] + q[2]) / 3.0);
-        auto bake = [&](int x, int y, uint8_t kind) {
-            const size_t i = size_t(y) * size_t(size) + size_t(x);
-            if (state[i] == kEmpty)
-                painted.push_back(uint32_t(i));
-            state[i] = kind;
-            if (hitFace == UINT32_MAX)
-                return;
-            const double px = x + 0.5 - q[0].x, py = y + 0.5 - q[0].y;
-            float l1 = float(a1 * px + b1 * py), l2 = float(a2 * px + b2 * py), l0 = 1.0f - l1 - l2;
-            if (l0 < 0 || l1 < 0 || l2 < 0) {
+    }
+
+    out.rgba.resize(texels * 4);
+    std::vector<uint8_t> state(texels, 0);
+    const size_t bandCount = bands.start.size() - 1;
+    std::vector<size_t> baked(bandCount, 0), flat(bandCount, 0);
+    runBands(bandCount, options.threads, [&](size_t band) {
+        const int r0 = int(band) * kBandRows, r1 = std::min(height, r0 + kBandRows);
+        uint8_t *const rgba = out.rgba.data();
+        uint8_t *const states = state.data();
+        // Flat normal (128, 128, 255) on the band's rows (image rows height - r1 .. height - 1 - r0).
+        std::fill(reinterpret_cast<uint32_t *>(rgba) + size_t(height - r1) * size_t(width),
+                  reinterpret_cast<uint32_t *>(rgba) + size_t(height - r0) * size_t(width),
+                  0xFFFF8080u);  // bytes 128, 128, 255, 255
+        glm::dvec2 q[3];
+        // The source face under each texel centre of the band (its UV triangle holds the centre):
+        // where the walk of a target texel starts, so that it follows the atlas' correspondence
+        // and stays short.
+        std::vector<uint32_t> under(size_t(r1 - r0) * size_t(width), UINT32_MAX);
+        for (uint32_t i = sourceBands.start[band]; i < sourceBands.start[band + 1]; ++i) {
+            const uint32_t f = sourceBands.faces[i];
+            loadUv(sorted->mesh, f, width, height, q);
+            rasterCentreSpans(q[0], q[1], q[2], width, height, [&](int y, int xl, int xr) {
+                if (y >= r0 && y < r1)
+                    std::fill(&under[size_t(y - r0) * size_t(width) + size_t(xl)],
+                              &under[size_t(y - r0) * size_t(width) + size_t(xr)] + 1, f);
+            });
+        }
+        for (uint32_t i = bands.start[band]; i < bands.start[band + 1]; ++i) {
+            const size_t f = bands.faces[i];
+            loadUv(target, f, width, height, q);
+            const double d = doubleArea(q[0], q[1], q[2]);
+            if (!(d != 0) || !std::isfinite(d))
+                continue;
+            // Barycentric weights as affine functions of the texel centre: l = l0 + lx x + ly y.
+            const double a1 = (q[2].y - q[0].y) / d, b1 = -(q[2].x - q[0].x) / d;
+            const double a2 = -(q[1].y - q[0].y) / d, b2 = (q[1].x - q[0].x) / d;
+            glm::vec3 tp[3], tn[3], tt[3];
+            float w = 0.0f;
+            for (int k = 0; k < 3; ++k) {
+                const uint32_t v = target.triangles[3 * f + size_t(k)];
+                tp[k] = target.positions[v];
+                tn[k] = target.normals[v];
+                tt[k] = glm::vec3(out.cornerTangents[3 * f + size_t(k)]);
+                w += out.cornerTangents[3 * f + size_t(k)].w;
+            }
+            const float sign = w < 0.0f ? -1.0f : 1.0f;
+            sorted->forRuns(glm::min(q[0], glm::min(q[1], q[2])), glm::max(q[0], glm::max(q[1], q[2])),
+                            [&](uint32_t first, uint32_t last) { walk->prefetch(first, last); });
+            uint32_t hitFace = UINT32_MAX;  // where the walk starts: the last answer, first the face under the UV
+            // Texel (x, y) at barycentric weights l: its state.
+            auto bake = [&](int x, int y, float l0, float l1, float l2) -> uint8_t {
+                // The first walk of the face in this band starts at the source face under the
+                // texel's point of the target's UV triangle (weights clamped onto it: an edge
+                // texel's own UV may lie in the gutter or in another chart).
+                const uint32_t start = under[size_t(y - r0) * size_t(width) + size_t(x)];
+                if (start != UINT32_MAX)
+                    hitFace = start;
+                else if (hitFace == UINT32_MAX && (hitFace = grid->find(double(l0) * q[0] + double(l1) * q[1] +
+                                                                        double(l2) * q[2])) == UINT32_MAX)
+                    return kTexelPainted;
+                glm::vec3 N = l0 * tn[0] + l1 * tn[1] + l2 * tn[2];
+                const SurfaceWalk::Hit hit = walk->project(l0 * tp[0] + l1 * tp[1] + l2 * tp[2], hitFace, N, 64);
+                hitFace = hit.face;
+                const glm::vec3 n = walk->normalAt(hit);
+                glm::vec3 T = l0 * tt[0] + l1 * tt[1] + l2 * tt[2];
+                const float nl = glm::dot(N, N), tl = glm::dot(T, T);
+                if (!(nl > 0.0f && tl > 0.0f))
+                    return kTexelPainted;
+                N *= 1.0f / std::sqrt(nl), T *= 1.0f / std::sqrt(tl);
+                const glm::vec3 B = sign * glm::cross(N, T);
+                // Rows of the inverse of the column matrix [T B N]: cross products over its determinant.
+                const glm::vec3 r0 = glm::cross(B, N), r1 = glm::cross(N, T), r2 = glm::cross(T, B);
+                const glm::vec3 solved(glm::dot(r0, n), glm::dot(r1, n), glm::dot(r2, n));
+                const float det = glm::dot(T, r0), length = glm::dot(solved, solved);
+                if (!(std::fabs(det) > 1e-6f) || !(length > 0.0f))
+                    return kTexelPainted;
+                const glm::vec3 c = solved * ((det < 0.0f ? -1.0f : 1.0f) / std::sqrt(length));
+                uint8_t *p = rgba + (size_t(height - 1 - y) * size_t(width) + size_t(x)) * 4;
+                p[0] = encodeFast(c.x), p[1] = encodeFast(c.y), p[2] = encodeFast(c.z);
+                return uint8_t(kTexelPainted | kFromSource);
+            };
+            // Centres inside: the weights step along the row.
+            rasterCentreSpans(q[0], q[1], q[2], width, height, [&](int y, int xl, int xr) {
+                if (y < r0 || y >= r1)
+                    return;
+                const double px = xl + 0.5 - q[0].x, py = y + 0.5 - q[0].y;
+                double l1 = a1 * px + b1 * py, l2 = a2 * px + b2 * py;
+                uint8_t *row = states + size_t(y) * size_t(width);
+                for (int x = xl; x <= xr; ++x, l1 += a1, l2 += a2)
+                    row[x] = bake(x, y, float(1.0 - l1 - l2), float(l1), float(l2));
+            });
+            // Texels the triangle only overlaps, if no centre claimed them: weights clamped onto it.
+            rasterConservative(q[0], q[1], q[2], kMargin, width, height, [&](int x, int y) {
+                uint8_t &texelState = states[size_t(y) * size_t(width) + size_t(x)];
+                if (y < r0 || y >= r1 || texelState != 0)
+                    return;
+                const double px = x + 0.5 - q[0].x, py = y + 0.5 - q[0].y;
+                float l1 = float(a1 * px + b1 * py), l2 = float(a2 * px + b2 * py), l0 = 1.0f - l1 - l2;
                 l0 = std::max(l0, 0.0f), l1 = std::max(l1, 0.0f), l2 = std::max(l2, 0.0f);
                 const float sum = l0 + l1 + l2;
                 if (sum > 0)
                     l0 /= sum, l1 /= sum, l2 /= sum;
-            }
-            glm::vec3 N = l0 * tn[0] + l1 * tn[1] + l2 * tn[2];
-            const SurfaceWalk::Hit hit = walk.project(l0 * tp[0] + l1 * tp[1] + l2 * tp[2], hitFace, N, 64);
-            hitFace = hit.face;
-            const uint32_t *sv = &source.triangles[3 * size_t(hit.face)];
-            const glm::vec3 n = hit.weights.x * source.normals[sv[0]] + hit.weights.y * source.normals[sv[1]] +
-                                hit.weights.z * source.normals[sv[2]];
-            glm::vec3 T = l0 * tt[0] + l1 * tt[1] + l2 * tt[2];
-            const float nl = glm::dot(N, N), tl = glm::dot(T, T);
-            if (!(nl > 0.0f && tl > 0.0f))
-                return;
-            N *= 1.0f / std::sqrt(nl), T *= 1.0f / std::sqrt(tl);
-            const glm::vec3 B = sign * glm::cross(N, T);
-            // Rows of the inverse of the column matrix [T B N]: cross products over its determinant.
-            const glm::vec3 r0 = glm::cross(B, N), r1 = glm::cross(N, T), r2 = glm::cross(T, B);
-            const glm::vec3 solved(glm::dot(r0, n), glm::dot(r1, n), glm::dot(r2, n));
-            const float det = glm::dot(T, r0), length = glm::dot(solved, solved);
-            if (!(std::fabs(det) > 1e-6f) || !(length > 0.0f))
-                return;
-            const glm::vec3 c = solved * ((det < 0.0f ? -1.0f : 1.0f) / std::sqrt(length));
-            uint8_t *p = &out.rgba[(size_t(size - 1 - y) * size_t(size) + size_t(x)) * 4];
-            p[0] = encodeFast(c.x), p[1] = encodeFast(c.y), p[2] = encodeFast(c.z);
-            state[i] = kind | kFromSource;
-        };
-        rasterCentres(q[0], q[1], q[2], size, size, [&](int x, int y) { bake(x, y, kCentre); });
-        rasterConservative(q[0], q[1], q[2], kMargin, size, size, [&](int x, int y) {
-            if (state[size_t(y) * size_t(size) + size_t(x)] == kEmpty)
-                bake(x, y, kEdge);
-        });
-    }
-    for (uint32_t i : painted) {
-        if (state[i] & kFromSource)
-            ++out.texelsBaked;
-        else
-            ++out.texelsWithoutSource;
-        state[i] = 1;
-    }
+                texelState = bake(x, y, l0, l1, l2);
+            });
+        }
+        size_t fromSource = 0, painted = 0;  // local: the bands' counters share cache lines
+        for (size_t t = size_t(r0) * size_t(width); t < size_t(r1) * size_t(width); ++t) {
+            fromSource += states[t] >> 1;
+            painted += states[t] & 1;
+        }
+        baked[band] = fromSource;
+        flat[band] = painted - fromSource;
+    });
+    for (size_t b = 0; b < bandCount; ++b)
+        out.texelsBaked += baked[b], out.texelsWithoutSource += flat[b];
 
     // The gutter: renormalised mean of the painted neighbours.
-    dilateTexels(size, state, painted, options.dilation, [&](int x, int y) {
+    dilateTexels(width, height, state, options.dilation, options.threads, [&](int x, int y) {
         glm::vec3 sum(0.0f);
         for (int dy = -1; dy <= 1; ++dy)
             for (int dx = -1; dx <= 1; ++dx) {
                 const int nx = x + dx, ny = y + dy;
-                if (nx < 0 || ny < 0 || nx >= size || ny >= size || state[size_t(ny) * size_t(size) + size_t(nx)] != 1)
+                if (nx < 0 || ny < 0 || nx >= width || ny >= height ||
+                    !(state[size_t(ny) * size_t(width) + size_t(nx)] & kTexelPainted))
                     continue;
-                const uint8_t *p = &out.rgba[(size_t(size - 1 - ny) * size_t(size) + size_t(nx)) * 4];
+                const uint8_t *p = &out.rgba[(size_t(height - 1 - ny) * size_t(width) + size_t(nx)) * 4];
                 sum += glm::vec3(decode(p[0]), decode(p[1]), decode(p[2]));
             }
         const float length = glm::length(sum);
         if (!(length > 0.0f))
             return false;
         sum /= length;
-        uint8_t *p = &out.rgba[(size_t(size - 1 - y) * size_t(size) + size_t(x)) * 4];
+        uint8_t *p = &out.rgba[(size_t(height - 1 - y) * size_t(width) + size_t(x)) * 4];
         p[0] = encode(sum.x), p[1] = encode(sum.y), p[2] = encode(sum.z);
         return true;
     });

@@ -19,6 +19,9 @@
 // first, then texels a triangle merely overlaps; then `dilation` rings of texels around the
 // charts take the renormalised mean of their painted neighbours (the gutter). Texels no target
 // triangle touches keep the flat normal (0, 0, 1).
+//
+// The texture is split into bands of texel rows baked on `threads` threads (parallel_bands.h);
+// each band walks from its own starting points, so the map is the same for any thread count.
 #pragma once
 
 #include <cstddef>
@@ -43,15 +46,18 @@ struct NormalBakeMesh {
 };
 
 struct NormalBakeOptions {
-    int size = 0;      // the atlas' side in texels (the base colour's)
+    // The atlas' texture in texels (the base colour's: UVs are normalised per axis, so a 2:1
+    // atlas gets a 2:1 map); height 0 means width (square).
+    int width = 0, height = 0;
     int dilation = 2;  // gutter rings, as the base colour's (half the default gutter of 4)
+    int threads = 0;   // 0: one per hardware thread
 };
 
 struct NormalMap {
     bool ok = false;
     std::string message;  // why not, when !ok
-    int size = 0;
-    // size x size RGBA8, rows from the top (v = 1) down like AtlasTexture; alpha 255.
+    int width = 0, height = 0;
+    // width x height RGBA8, rows from the top (v = 1) down like AtlasTexture; alpha 255.
     std::vector<uint8_t> rgba;
     // The target's MikkTSpace tangents, 3 per face (xyz, w = bitangent sign): the frame the map
     // was baked against, for exporters (glTF TANGENT).
@@ -61,7 +67,7 @@ struct NormalMap {
 };
 
 // Returns !ok with a message for empty or inconsistent input (null arrays, indices out of range,
-// size < 1).
+// a side outside [1, 16384]).
 NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &target, const NormalBakeOptions &options);
 
 // The target's per-corner tangents alone (positions, normals and UVs per corner, as MikkTSpace

@@ -9,9 +9,9 @@
 
 namespace voxelfair {
 
-SurfaceWalk::SurfaceWalk(const glm::vec3 *positions, const uint32_t *triangles, size_t faceCount, size_t vertexCount)
-    : frames_(faceCount), opposite_(buildEdgeAdjacency(triangles, faceCount, vertexCount).opposite),
-      positions_(positions), triangles_(triangles), faceNormals_(faceCount), nearPlane_(faceCount),
+SurfaceWalk::SurfaceWalk(const glm::vec3 *positions, const glm::vec3 *normals, const uint32_t *triangles,
+                         size_t faceCount, size_t vertexCount)
+    : faces_(faceCount), cornerNormals_(3 * faceCount, glm::vec3(0.0f)), positions_(positions), triangles_(triangles),
       vertexFaceStart_(vertexCount + 1, 0), vertexFaces_(3 * faceCount) {
     for (size_t c = 0; c < 3 * faceCount; ++c)
         ++vertexFaceStart_[triangles[c] + 1];
@@ -22,24 +22,31 @@ SurfaceWalk::SurfaceWalk(const glm::vec3 *positions, const uint32_t *triangles, 
         for (size_t c = 0; c < 3 * faceCount; ++c)
             vertexFaces_[fill[triangles[c]]++] = uint32_t(c / 3);
     }
+    const std::vector<uint32_t> opposite = buildEdgeAdjacency(triangles, faceCount, vertexCount).opposite;
     for (size_t f = 0; f < faceCount; ++f) {
         const glm::vec3 a = positions[triangles[3 * f]], e1 = positions[triangles[3 * f + 1]] - a,
                         e2 = positions[triangles[3 * f + 2]] - a;
         // Dual basis of (e1, e2) in their plane: dot(dual1, e1) = 1, dot(dual1, e2) = 0, ...
         const float d11 = glm::dot(e1, e1), d12 = glm::dot(e1, e2), d22 = glm::dot(e2, e2);
         const float det = d11 * d22 - d12 * d12;
-        Frame &frame = frames_[f];
-        frame.origin = a;
+        Face &face = faces_[f];
+        face.origin = a;
         const glm::vec3 n = glm::cross(e1, e2);
         const float length = glm::length(n);
-        faceNormals_[f] = length > 0.0f ? n / length : n;
+        face.normal = length > 0.0f ? n / length : n;
         // A quarter of the longest edge, squared.
-        nearPlane_[f] = 0.0625f * std::max({d11, d22, glm::dot(e2 - e1, e2 - e1)});
+        face.nearPlane = 0.0625f * std::max({d11, d22, glm::dot(e2 - e1, e2 - e1)});
         if (det > 0.0f) {
-            frame.dual1 = (d22 * e1 - d12 * e2) / det;
-            frame.dual2 = (d11 * e2 - d12 * e1) / det;
+            face.dual1 = (d22 * e1 - d12 * e2) / det;
+            face.dual2 = (d11 * e2 - d12 * e1) / det;
         } else {
-            frame.dual1 = frame.dual2 = glm::vec3(0.0f);  // no area: weights (1, 0, 0)
+            face.dual1 = face.dual2 = glm::vec3(0.0f);  // no area: weights (1, 0, 0)
+        }
+        static_assert(kNoOpposite == UINT32_MAX, "project() tests borders against UINT32_MAX");
+        for (int k = 0; k < 3; ++k) {
+            face.opposite[k] = opposite[3 * f + size_t(k)];
+            if (normals)
+                cornerNormals_[3 * f + size_t(k)] = normals[triangles[3 * f + size_t(k)]];
         }
     }
 }
@@ -82,35 +89,7 @@ glm::vec3 closestWeights(const glm::vec3 &p, const glm::vec3 &a, const glm::vec3
 }
 }  // namespace
 
-SurfaceWalk::Hit SurfaceWalk::project(const glm::vec3 &p, uint32_t start, const glm::vec3 &facing, int maxSteps) const {
-    uint32_t face = start, previous = UINT32_MAX;
-    glm::vec3 w(1.0f, 0.0f, 0.0f);
-    for (int step = 0;; ++step) {
-        const Frame &frame = frames_[face];
-        const glm::vec3 d = p - frame.origin;
-        const float w1 = glm::dot(d, frame.dual1), w2 = glm::dot(d, frame.dual2);
-        w = glm::vec3(1.0f - w1 - w2, w1, w2);
-        // The most negative weight's corner k faces the edge (k + 1, k + 2) = half-edge (k + 1) % 3.
-        int k = 0;
-        if (w[1] < w[k])
-            k = 1;
-        if (w[2] < w[k])
-            k = 2;
-        if (w[k] >= 0.0f || step >= maxSteps)
-            break;
-        const uint32_t across = opposite_[3 * size_t(face) + size_t((k + 1) % 3)];
-        if (across == kNoOpposite || across / 3 == previous)
-            break;  // border, or a ridge walked back and forth
-        previous = face;
-        face = across / 3;
-    }
-    // Inside, and near the plane compared with the triangle's size: the projection is the closest
-    // point, or close to it.
-    if (w.x >= 0.0f && w.y >= 0.0f && w.z >= 0.0f) {
-        const float height = glm::dot(p - frames_[face].origin, faceNormals_[face]);
-        if (height * height <= nearPlane_[face])
-            return {face, w};
-    }
+SurfaceWalk::Hit SurfaceWalk::closestAround(const glm::vec3 &p, uint32_t face, const glm::vec3 &facing) const {
     // Off the source: the closest facing point around the last triangle, while it improves.
     auto point = [&](uint32_t f, const glm::vec3 &weights) {
         const uint32_t *t = &triangles_[3 * size_t(f)];
@@ -129,7 +108,7 @@ SurfaceWalk::Hit SurfaceWalk::project(const glm::vec3 &p, uint32_t start, const 
             const uint32_t v = triangles_[3 * size_t(centre) + size_t(k)];
             for (uint32_t i = vertexFaceStart_[v]; i < vertexFaceStart_[v + 1]; ++i) {
                 const uint32_t f = vertexFaces_[i];
-                if (f == best.face || glm::dot(faceNormals_[f], facing) <= 0.0f)
+                if (f == best.face || glm::dot(faces_[f].normal, facing) <= 0.0f)
                     continue;
                 const glm::vec3 weights = closest(f);
                 q = point(f, weights);

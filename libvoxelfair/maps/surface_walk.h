@@ -21,31 +21,85 @@
 #include <cstdint>
 #include <vector>
 
+#include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
 namespace voxelfair {
 
 class SurfaceWalk {
 public:
-    SurfaceWalk(const glm::vec3 *positions, const uint32_t *triangles, size_t faceCount, size_t vertexCount);
+    // `normals` (per vertex, may be null) are kept per face corner for normalAt().
+    SurfaceWalk(const glm::vec3 *positions, const glm::vec3 *normals, const uint32_t *triangles, size_t faceCount,
+                size_t vertexCount);
 
     struct Hit {
         uint32_t face;
         glm::vec3 weights;  // barycentric, >= 0, summing to 1
     };
-    // `start` must be a face index; at most `maxSteps` moves.
-    Hit project(const glm::vec3 &p, uint32_t start, const glm::vec3 &facing, int maxSteps = 16) const;
+    // `start` must be a face index; at most `maxSteps` moves. Inline: the bakers call it per texel.
+    Hit project(const glm::vec3 &p, uint32_t start, const glm::vec3 &facing, int maxSteps = 16) const {
+        uint32_t face = start, previous = UINT32_MAX;
+        for (int step = 0;; ++step) {
+            const Face &f = faces_[face];
+            const glm::vec3 d = p - f.origin;
+            const float w1 = glm::dot(d, f.dual1), w2 = glm::dot(d, f.dual2);
+            const glm::vec3 w(1.0f - w1 - w2, w1, w2);
+            // The most negative weight's corner k faces the edge (k + 1, k + 2) = half-edge (k + 1) % 3.
+            int k = 0;
+            if (w[1] < w[k])
+                k = 1;
+            if (w[2] < w[k])
+                k = 2;
+            if (w[k] >= 0.0f) {
+                // Inside, and near the plane compared with the triangle's size: the projection is
+                // the closest point, or close to it.
+                const float height = glm::dot(d, f.normal);
+                if (height * height <= f.nearPlane)
+                    return {face, w};
+                break;
+            }
+            const uint32_t across = f.opposite[(k + 1) % 3];
+            if (step >= maxSteps || across == UINT32_MAX || across / 3 == previous)
+                break;  // out of steps, a border, or a ridge walked back and forth
+            previous = face;
+            face = across / 3;
+        }
+        return closestAround(p, face, facing);
+    }
+    // The vertex normals interpolated at a hit (not normalised).
+    glm::vec3 normalAt(const Hit &hit) const {
+        const glm::vec3 *n = &cornerNormals_[3 * size_t(hit.face)];
+        return hit.weights.x * n[0] + hit.weights.y * n[1] + hit.weights.z * n[2];
+    }
+    // Asks the memory system for faces [first, last)'s records ahead of a walk among them (the
+    // walk's loads depend on each other; fetched ahead, their misses overlap).
+    void prefetch(uint32_t first, uint32_t last) const {
+#if defined(__GNUC__)
+        for (uint32_t f = first; f < last; ++f)
+            __builtin_prefetch(&faces_[f]);
+        const char *n = reinterpret_cast<const char *>(cornerNormals_.data() + 3 * size_t(first)),
+                   *end = reinterpret_cast<const char *>(cornerNormals_.data() + 3 * size_t(last));
+        for (; n < end; n += 64)
+            __builtin_prefetch(n);
+#else
+        (void)first, (void)last;
+#endif
+    }
 
 private:
-    struct Frame {
-        glm::vec3 origin, dual1, dual2;  // weights 1, 2 = dot(p - origin, dual)
+    // Everything a step reads, in one 64-byte record per face: weights 1, 2 = dot(p - origin,
+    // dual1/2), the unit normal, the squared height under which a projection inside is kept, and
+    // the half-edges across each edge (3f + i -> the other face's half-edge).
+    struct alignas(64) Face {
+        glm::vec3 origin, dual1, dual2, normal;
+        float nearPlane;
+        uint32_t opposite[3];
     };
-    std::vector<Frame> frames_;
-    std::vector<uint32_t> opposite_;  // half-edge 3f + i -> the other face's half-edge
+    Hit closestAround(const glm::vec3 &p, uint32_t face, const glm::vec3 &facing) const;
+    std::vector<Face> faces_;
+    std::vector<glm::vec3> cornerNormals_;  // 3 per face
     const glm::vec3 *positions_;
     const uint32_t *triangles_;
-    std::vector<glm::vec3> faceNormals_;                   // unit
-    std::vector<float> nearPlane_;                         // squared height under which a projection inside is kept
     std::vector<uint32_t> vertexFaceStart_, vertexFaces_;  // faces around each vertex (CSR)
 };
 

@@ -21,7 +21,7 @@ struct FairedMesh {
     std::vector<glm::vec3> positions, normals;
     std::vector<uint32_t> triangles;
     std::vector<glm::vec2> wedgeUv;
-    int textureSize = 0;
+    int textureWidth = 0, textureHeight = 0;  // the atlas texture (width >= height)
     float voxelSize = 1.0f;
     size_t faceCount() const { return triangles.size() / 3; }
 };
@@ -50,7 +50,8 @@ inline FairedMesh fairedMesh(const pipeline::Model &model, float texelsPerVoxel)
     options.pack.texelsPerUnit = texelsPerVoxel;
     const TextureAtlas atlas = pipeline::buildAtlas(placed, chain, options);
     out.wedgeUv = atlas.layout.wedgeUv;
-    out.textureSize = atlas.layout.size;
+    out.textureWidth = atlas.layout.width;
+    out.textureHeight = atlas.layout.height;
     return out;
 }
 

@@ -154,7 +154,9 @@ TEST(NormalBake, NormalFieldsOnRandomPlanesReadBackThroughTheShaderFrame) {
         for (glm::vec3 &n : coarse.normals)
             n = glm::normalize(n + 0.2f * R * glm::vec3(u(rng), u(rng), 0.0f));
         NormalBakeOptions options;
-        options.size = 256;
+        // Square maps, and 2:1 ones (a wide atlas: UVs normalised per axis).
+        options.width = 256;
+        options.height = trial % 3 == 2 ? 128 : 256;
         const NormalMap map = bakeNormalMap(view(fine), view(coarse), options);
         ASSERT_TRUE(map.ok) << map.message;
         EXPECT_EQ(map.texelsWithoutSource, 0u);
@@ -173,8 +175,9 @@ TEST(NormalBake, NormalFieldsOnRandomPlanesReadBackThroughTheShaderFrame) {
                 for (int k = 0; k < 3; ++k)
                     uv += l[k] * coarse.wedgeUv[3 * f + size_t(k)];
                 // Snap to the texel centre, and interpolate there.
-                const glm::vec2 texel = glm::floor(uv * float(map.size)) + 0.5f;
-                uv = texel / float(map.size);
+                const glm::vec2 side(float(map.width), float(map.height));
+                const glm::vec2 texel = glm::floor(uv * side) + 0.5f;
+                uv = texel / side;
                 const glm::vec2 *q = &coarse.wedgeUv[3 * f];
                 const float d = (q[1].x - q[0].x) * (q[2].y - q[0].y) - (q[1].y - q[0].y) * (q[2].x - q[0].x);
                 const float b1 = ((uv.x - q[0].x) * (q[2].y - q[0].y) - (uv.y - q[0].y) * (q[2].x - q[0].x)) / d;
@@ -188,7 +191,7 @@ TEST(NormalBake, NormalFieldsOnRandomPlanesReadBackThroughTheShaderFrame) {
                     w += b[k] * map.cornerTangents[3 * f + size_t(k)].w;
                 }
                 const int x = int(texel.x), y = int(texel.y);
-                const uint8_t *p = &map.rgba[(size_t(map.size - 1 - y) * size_t(map.size) + size_t(x)) * 4];
+                const uint8_t *p = &map.rgba[(size_t(map.height - 1 - y) * size_t(map.width) + size_t(x)) * 4];
                 const glm::vec3 decoded(p[0] / 255.0f * 2 - 1, p[1] / 255.0f * 2 - 1, p[2] / 255.0f * 2 - 1);
                 const glm::vec3 shaded = applyNormalMapTexel(decoded, n, glm::vec4(t, w));
                 // The fine grid's normal at the same point (its UV map is the same).
@@ -215,7 +218,7 @@ TEST(NormalBake, NormalFieldsOnRandomPlanesReadBackThroughTheShaderFrame) {
 TEST(NormalBake, RefusesEmptyOrBrokenInputWithAMessage) {
     NormalBakeMesh empty;
     NormalBakeOptions options;
-    options.size = 16;
+    options.width = 16;
     NormalMap map = bakeNormalMap(empty, empty, options);
     EXPECT_FALSE(map.ok);
     EXPECT_NE(map.message.find("no faces"), std::string::npos);
@@ -227,6 +230,38 @@ TEST(NormalBake, RefusesEmptyOrBrokenInputWithAMessage) {
     map = bakeNormalMap(view(g), bad, options);
     EXPECT_FALSE(map.ok);
     EXPECT_NE(map.message.find("out of range"), std::string::npos);
-    options.size = 0;
+    options.width = 0;
     EXPECT_FALSE(bakeNormalMap(view(g), view(g), options).ok);
+    options.width = 16, options.height = 20000;
+    EXPECT_FALSE(bakeNormalMap(view(g), view(g), options).ok);
+}
+
+TEST(NormalBake, TheMapIsTheSameOnAnyNumberOfThreads) {
+    std::mt19937 rng(1313);
+    for (int trial = 0; trial < 4; ++trial) {
+        SCOPED_TRACE(trial);
+        const glm::mat3 R = randomRotation(rng);
+        const glm::mat2 A = randomUvMap(rng, trial % 2 == 1);
+        const glm::vec2 c(0.5f, 0.5f);
+        PlaneGrid fine = planeGrid(41, R, glm::vec3(1.0f), A, c - A * glm::vec2(0.5f));
+        const PlaneGrid coarse = planeGrid(5, R, glm::vec3(1.0f), A, c - A * glm::vec2(0.5f));
+        for (size_t v = 0; v < fine.positions.size(); ++v) {
+            const glm::vec2 st = fine.st(v, 41);
+            fine.normals[v] = glm::normalize(R * glm::vec3(0.3f * std::sin(7 * st.x), 0.3f * std::cos(5 * st.y), 1.0f));
+        }
+        NormalBakeOptions options;
+        options.width = 512;
+        options.height = trial < 2 ? 512 : 256;
+        options.threads = 1;
+        const NormalMap one = bakeNormalMap(view(fine), view(coarse), options);
+        ASSERT_TRUE(one.ok) << one.message;
+        for (int threads : {2, 3, 8}) {
+            options.threads = threads;
+            const NormalMap many = bakeNormalMap(view(fine), view(coarse), options);
+            ASSERT_TRUE(many.ok) << many.message;
+            EXPECT_EQ(many.texelsBaked, one.texelsBaked);
+            EXPECT_GT(many.texelsBaked, size_t(options.width) * size_t(options.height) / 20);
+            EXPECT_TRUE(many.rgba == one.rgba) << threads << " threads";
+        }
+    }
 }

@@ -33,7 +33,7 @@ TEST(NormalMapGoal, DecimatedToTenPercentEveryModelShadesWithinAThirdOfItsVertex
     for (const std::string &r : refused)
         std::printf("not accepted by the readers: %s\n", r.c_str());
     ASSERT_GE(models.size(), 20u);
-    std::printf("%-14s %8s %8s %7s %9s %9s %6s\n", "model", "faces", "10%", "map", "vertex", "mapped", "ratio");
+    std::printf("%-14s %8s %8s %11s %9s %9s %6s\n", "model", "faces", "10%", "map", "vertex", "mapped", "ratio");
     for (const auto &model : models) {
         SCOPED_TRACE(model->name);
         if (model->solidVoxels() == 0) {
@@ -45,12 +45,13 @@ TEST(NormalMapGoal, DecimatedToTenPercentEveryModelShadesWithinAThirdOfItsVertex
         const NormalBakeMesh source = bakeView(hi.positions, hi.normals, hi.triangles, hi.wedgeUv);
         const NormalBakeMesh target = bakeView(lo.positions, lo.normals, lo.triangles, lo.wedgeUv);
         NormalBakeOptions options;
-        options.size = hi.textureSize;
+        options.width = hi.textureWidth;
+        options.height = hi.textureHeight;
         const NormalMap map = bakeNormalMap(source, target, options);
         ASSERT_TRUE(map.ok) << map.message;
         const ShadingErrors e = measureShading(source, target, map, 10000, 2.0 * hi.voxelSize);
-        std::printf("%-14s %8zu %8zu %5dpx %8.2f° %8.2f° %6.3f\n", model->name.c_str(), hi.faceCount(), lo.faceCount(),
-                    map.size, e.vertexNormalDegrees, e.mappedDegrees, e.ratio());
+        std::printf("%-14s %8zu %8zu %5dx%-5d %8.2f° %8.2f° %6.3f\n", model->name.c_str(), hi.faceCount(),
+                    lo.faceCount(), map.width, map.height, e.vertexNormalDegrees, e.mappedDegrees, e.ratio());
         EXPECT_LE(double(lo.faceCount()), std::max(0.1 * double(hi.faceCount()) + 2, 4.0));  // a closed mesh keeps 4
         EXPECT_GT(e.samples, 9500u);
         const auto shortfall = kShortfalls.find(model->name);

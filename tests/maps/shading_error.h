@@ -68,15 +68,15 @@ struct ShadingErrors {
 };
 
 inline glm::vec3 sampleMapBilinear(const NormalMap &map, glm::vec2 uv) {
-    const int size = map.size;
-    const float x = uv.x * float(size) - 0.5f, y = uv.y * float(size) - 0.5f;
+    const int width = map.width, height = map.height;
+    const float x = uv.x * float(width) - 0.5f, y = uv.y * float(height) - 0.5f;
     const int x0 = int(std::floor(x)), y0 = int(std::floor(y));
     const float fx = x - float(x0), fy = y - float(y0);
     glm::vec3 sum(0.0f);
     for (int j = 0; j < 2; ++j)
         for (int i = 0; i < 2; ++i) {
-            const int tx = std::clamp(x0 + i, 0, size - 1), ty = std::clamp(y0 + j, 0, size - 1);
-            const uint8_t *p = &map.rgba[(size_t(size - 1 - ty) * size_t(size) + size_t(tx)) * 4];
+            const int tx = std::clamp(x0 + i, 0, width - 1), ty = std::clamp(y0 + j, 0, height - 1);
+            const uint8_t *p = &map.rgba[(size_t(height - 1 - ty) * size_t(width) + size_t(tx)) * 4];
             const glm::vec3 t(p[0] / 255.0f * 2 - 1, p[1] / 255.0f * 2 - 1, p[2] / 255.0f * 2 - 1);
             sum += t * ((i ? fx : 1 - fx) * (j ? fy : 1 - fy));
         }
