@@ -12,6 +12,11 @@ meshlabserver with voxelfair's plugins:
                   tangent-space normal map (beyond the paper); writes NAME.ply, NAME.obj
                   (+ NAME.obj.mtl naming both maps) and NAME.glb (glTF 2.0, texture embedded, one
                   node per part, animation) with NAME_texture.png and NAME_normal.png beside them
+                  --lods 1,0.25,0.05 (shares of the faired mesh's faces) writes levels of detail
+                  instead: NAME_lod0.glb, NAME_lod1.glb, ... from one atlas (NAME_texture.png,
+                  shared: decimation with texture keeps the UVs), each decimated copy of the
+                  faired layer with its own normal map NAME_lodN_normal.png baked from the full
+                  faired mesh
   --mode import   the voxel surface only: NAME.ply with face colours and each face's section
   --mode compare  the same input through voxelfair's fairing (paper and constrained modes), through
                   MeshLab's Taubin, HC Laplacian and TwoStep Smooth, and (when the build has
@@ -217,6 +222,55 @@ def name_normal_map(mtl, normal):
     mtl.write_text("\n".join(out) + "\n")
 
 
+def lod_script(text, lods, normals):
+    """The pipeline .mlx with its tail (copy of the faired layer, decimation, normal map) once per
+    level of detail: the faired layer (0) made current again, copied (the copy becomes layer k + 1),
+    decimated to its share (not at 1), its normal map baked from layer 0. Everything before the
+    tail (fairing, atlas, maps in the atlas' layout) runs once."""
+    begin = text.index(' <filter name="Duplicate Current layer"/>')
+    end = text.index("</FilterScript>")
+    tail = text[begin:end]
+    blocks = []
+    for level, (share, normal) in enumerate(zip(lods, normals)):
+        block = tail
+        if share >= 1.0:
+            block = re.sub(r' <filter name="Simplification:.*?</filter>\n', "", block, flags=re.S)
+        block = re.sub(r'(name="TargetPerc" value=")[^"]*"', lambda m: m.group(1) + repr(share) + '"', block)
+        block = re.sub(r'(name="normalFile" value=")[^"]*"',
+                       lambda m: m.group(1) + str(normal).replace("&", "&amp;").replace('"', "&quot;") + '"', block)
+        if level > 0:
+            block = ' <filter name="Change the current layer">\n  <Param type="RichMesh" name="layer" value="0"/>\n' \
+                    ' </filter>\n' + block
+        blocks.append(block)
+    return text[:begin] + "".join(blocks) + text[end:]
+
+
+def convert_lods(model, args, run):
+    """--lods: one meshlabserver run writes NAME_lodN.glb for every share (layer N + 1 of the
+    document); returns (outputs, details)."""
+    out, name = Path(args.output), model.stem
+    texture = out / f"{name}_texture.png"
+    glbs = [out / f"{name}_lod{level}.glb" for level in range(len(args.lods))]
+    normals = [out / f"{name}_lod{level}_normal.png" for level in range(len(args.lods))]
+    with tempfile.TemporaryDirectory(prefix="voxelfair-script-") as tmp:
+        script = Path(tmp) / "pipeline.mlx"
+        # The single-mesh script with a copy and a normal map (decimation below 1), then repeated.
+        single = argparse.Namespace(**dict(vars(args), decimate=0.5, no_normal_map=False))
+        text = lod_script(pipeline_script(single, texture, normals[0]), args.lods, normals)
+        if args.no_normal_map:
+            text = re.sub(r' <filter name="Voxel Texture: Bake Normal Map">.*?</filter>\n', "", text, flags=re.S)
+        script.write_text(text)
+        arguments = ["-i", str(model)]
+        for level, glb in enumerate(glbs):
+            arguments += ["-o", str(glb), "-l", str(level + 1), "-m", "wt", "vn"]
+        code, output, _ = run(arguments + ["-s", str(script)])
+    maps = [] if args.no_normal_map else normals
+    check([texture] + maps + glbs, code, output)
+    details = [line.split(": ", 1)[1] for line in output.splitlines()
+               if line.startswith(("filter_voxelfair: Texture Atlas", "filter_voxelfair: Bake Normal Map"))]
+    return [texture] + maps + glbs, details
+
+
 class Run:
     """One meshlabserver process in private XDG folders, under xvfb-run."""
 
@@ -289,6 +343,10 @@ def convert(model, args, run):
             details.append(f"vtk {time.monotonic() - begun:.2f} s")
         return outputs, time.monotonic() - started, details
 
+    if args.lods:
+        outputs, details = convert_lods(model, args, run)
+        return outputs, time.monotonic() - started, details
+
     ply, obj, glb = out / f"{name}.ply", out / f"{name}.obj", out / f"{name}.glb"
     texture = out / f"{name}_texture.png"
     normal = out / f"{name}_normal.png"
@@ -354,6 +412,8 @@ def main():
     parser.add_argument("--colours", choices=("crisp", "smoothed"), default="crisp", help="texture colours (default crisp)")
     parser.add_argument("--decimate", type=float, default=0.5,
                         help="keep this share of the faces with MeshLab's quadric decimation (default 0.5; 1 = none)")
+    parser.add_argument("--lods", help="levels of detail instead of one mesh: shares of the faired mesh's faces, "
+                        "e.g. 1,0.25,0.05 -> NAME_lod0.glb, NAME_lod1.glb, NAME_lod2.glb (glTF only)")
     parser.add_argument("--no-normal-map", action="store_true",
                         help="do not bake the faired mesh's shading into a normal map for the decimated mesh")
     parser.add_argument("--jobs", "-j", type=int, default=os.cpu_count() or 1, help="models converted at once")
@@ -369,6 +429,15 @@ def main():
         sys.exit("voxelfair: --metres-per-voxel must be positive")
     if not 0.0 < args.decimate <= 1.0:
         sys.exit("voxelfair: --decimate takes a share of the faces in (0, 1]")
+    if args.lods:
+        try:
+            args.lods = [float(share) for share in args.lods.split(",") if share.strip()]
+        except ValueError:
+            args.lods = []
+        if not args.lods or any(not 0.0 < share <= 1.0 for share in args.lods):
+            sys.exit("voxelfair: --lods takes a comma-separated list of shares of the faces in (0, 1], e.g. 1,0.25,0.05")
+        if args.mode != "full":
+            sys.exit("voxelfair: --lods needs --mode full")
     if args.passes < 1 or args.texels_per_voxel <= 0:
         sys.exit("voxelfair: --passes must be at least 1 and --texels-per-voxel positive")
     if args.palette and not Path(args.palette).is_file():

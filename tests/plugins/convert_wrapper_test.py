@@ -107,6 +107,55 @@ class ConvertWrapper(unittest.TestCase):
         self.assertEqual(sorted(p.name for p in (self.work / "parts").iterdir()),
                          ["3tnk.ply", "3tnkbarl.ply", "3tnktur.ply", "tank.ply"], output)
 
+    def test_levels_of_detail_share_one_atlas_and_keep_their_shares_of_the_faces(self):
+        shared = Path(__file__).resolve().parents[3] / "shared" / "models"
+        if not (shared / "vxl" / "3tnktur.vxl").is_file() or not (shared / "vox" / "robo.vox").is_file():
+            self.skipTest(f"the shared models are absent: {shared}")
+        for name in ("3tnk", "3tnktur", "3tnkbarl"):
+            for ext in (".vxl", ".hva"):
+                shutil.copy(shared / "vxl" / (name + ext), self.inputs / (name + ext))
+        shutil.copy(shared / "vox" / "robo.vox", self.inputs / "robo.vox")
+        shares = (1.0, 0.25, 0.05)
+        code, output = wrapper(self.work, "models/3tnk.vxl", "models/robo.vox", "-o", "lods", "--lods",
+                               ",".join(map(str, shares)))
+        self.assertEqual(code, 0, output)
+        import json, struct
+
+        def glb(path):
+            data = path.read_bytes()
+            length = struct.unpack("<I", data[12:16])[0]
+            gltf = json.loads(data[20:20 + length])
+            return gltf, data[20 + length + 8:]
+
+        def image(gltf, binary, texture):
+            view = gltf["bufferViews"][gltf["images"][gltf["textures"][texture]["source"]]["bufferView"]]
+            return binary[view.get("byteOffset", 0):view.get("byteOffset", 0) + view["byteLength"]]
+
+        for name in ("3tnk", "robo"):
+            faces, base_colours = [], []
+            for level in range(len(shares)):
+                path = self.work / "lods" / f"{name}_lod{level}.glb"
+                self.assertTrue(path.is_file(), f"{path.name} missing\n{output}")
+                self.assertTrue((self.work / "lods" / f"{name}_lod{level}_normal.png").is_file(), output)
+                validator = subprocess.run(["node", str(HERE.parent.parent / "tools" / "gltf_validate.js"), str(path)],
+                                           capture_output=True, text=True)
+                self.assertEqual(validator.returncode, 0, validator.stdout + validator.stderr)
+                self.assertIn("0 errors, 0 warnings", validator.stdout, path.name)
+                gltf, binary = glb(path)
+                faces.append(sum(gltf["accessors"][p["indices"]]["count"] // 3
+                                 for m in gltf["meshes"] for p in m["primitives"]))
+                material = gltf["materials"][0]
+                self.assertIn("normalTexture", material, path.name)
+                base_colours.append(image(gltf, binary, material["pbrMetallicRoughness"]["baseColorTexture"]["index"]))
+            # Level 0 is the faired mesh itself (share 1); each level within 20% of its share of it.
+            for level, share in enumerate(shares):
+                self.assertLessEqual(abs(faces[level] / faces[0] - share), 0.2 * share, f"{name}: {faces}")
+            # One atlas: every level embeds the same base colour, the PNG written beside them.
+            texture = (self.work / "lods" / f"{name}_texture.png").read_bytes()
+            for level, colour in enumerate(base_colours):
+                self.assertEqual(colour, texture, f"{name} level {level}")
+        self.assertFalse(any(p.name.endswith((".ply", ".obj")) for p in (self.work / "lods").iterdir()), output)
+
     def test_without_decimation_or_with_no_normal_map_no_normal_map_is_written(self):
         for options in (["--decimate", "1"], ["--no-normal-map"]):
             code, output = wrapper(self.work, "models/tank.vxl", "-o", "plain", "--formats", "obj", *options)
