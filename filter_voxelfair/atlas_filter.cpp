@@ -3,6 +3,7 @@
 #include "meshlab_arrays.h"
 
 #include "atlas/texture_atlas.h"
+#include "base/error.h"
 #include "fairing/voxel_size.h"
 
 #include <QDir>
@@ -154,9 +155,14 @@ bool FilterVoxelfairPlugin::applyTextureAtlas(MeshModel &m, const RichParameterL
 
     if (cb)
         cb(10, "Building the texture atlas");
-    const TextureAtlas atlas = buildTextureAtlas(input.mesh, options);
-    if (atlas.status() != AtlasStatus::Ok)
-        return fail(QString("Texture Atlas: %1").arg(QString::fromStdString(atlas.message())));
+    TextureAtlas atlas;
+    try {
+        atlas = buildTextureAtlas(input.mesh, options);
+    } catch (const Error &e) {
+        return fail(QString("Texture Atlas: %1").arg(e.what()));
+    }
+    if (atlas.charts.faceCount() == 0)
+        return fail("Texture Atlas: the mesh has no faces");
 
     // Write the texture before touching the mesh, so a failure leaves the mesh as it was.
     if (cb)

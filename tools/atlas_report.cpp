@@ -13,6 +13,7 @@
 //   atlas_report --gutter N       texels between charts (default 4; the bake fills N/2 of them)
 #include "atlas/atlas_measures.h"
 #include "atlas/texture_atlas.h"
+#include "base/error.h"
 #include "pipeline/pipeline_stages.h"
 #include "extraction/boundary_surface.h"
 #include "formats/file_bytes.h"
@@ -75,14 +76,16 @@ void report(const TestMesh &mesh, int textureSize, float texelsPerUnit, const ch
         options.pack.texelsPerUnit = texelsPerUnit;
         options.pack.gutter = gutter;
         t0 = std::chrono::steady_clock::now();
-        const TextureAtlas atlas = buildTextureAtlas(view, options);
+        TextureAtlas atlas;
+        try {
+            atlas = buildTextureAtlas(view, options);
+        } catch (const Error &e) {
+            std::printf("  %-8s failed: %s\n", toString(mode), e.what());
+            continue;
+        }
         const double atlasMs = msSince(t0);
         const AtlasLayout &layout = atlas.layout;
         const AtlasTexture &texture = atlas.texture;
-        if (atlas.status() != AtlasStatus::Ok) {
-            std::printf("  %-8s failed: %s\n", toString(mode), atlas.message().c_str());
-            continue;
-        }
         const AtlasMeasures m = measureAtlas(view, atlas.charts, layout);
         const ColourFidelity fid = measureColourFidelity(view, layout, texture);
         std::printf("  %-8s %6d %8.3f %7.2f %6.2f %6zu %8zu %8zu %9.5f %9.4f %7.3f %7.3f %6zu %8.1f\n", toString(mode),
@@ -191,12 +194,14 @@ void reportShared(const char *ppmDir) {
         const pipeline::Attributes a = pipeline::smoothAttributes(mesh);
         const AtlasMesh view = pipeline::atlasMesh(mesh, a);
         const auto t0 = std::chrono::steady_clock::now();
-        const TextureAtlas atlas = pipeline::buildAtlas(mesh, a, options);
-        const double ms = msSince(t0);
-        if (atlas.status() != AtlasStatus::Ok) {
-            std::printf("  %-14s failed: %s\n", file.filename().c_str(), atlas.message().c_str());
+        TextureAtlas atlas;
+        try {
+            atlas = pipeline::buildAtlas(mesh, a, options);
+        } catch (const Error &e) {
+            std::printf("  %-14s failed: %s\n", file.filename().c_str(), e.what());
             continue;
         }
+        const double ms = msSince(t0);
         const AtlasMeasures m = measureAtlas(view, atlas.charts, atlas.layout);
         const ColourFidelity fid = measureColourFidelity(view, atlas.layout, atlas.texture);
         covers.push_back(m.packingEfficiency);

@@ -39,7 +39,7 @@ void loadUv(const AtlasLayout &layout, size_t f, glm::dvec2 q[3]) {
 
 AtlasMeasures measureAtlas(const AtlasMesh &mesh, const AtlasCharts &charts, const AtlasLayout &layout) {
     AtlasMeasures m;
-    if (layout.status != AtlasStatus::Ok || layout.width <= 0 || layout.height <= 0)
+    if (layout.width <= 0 || layout.height <= 0)
         return m;
     const int size = layout.width, height = layout.height;
     const size_t texels = size_t(size) * size_t(height);

@@ -1,28 +1,30 @@
-// Input of the texture atlas (paper section 4.5): a triangle mesh on caller-owned arrays, in the
-// style of xatlas::MeshDecl. Nothing is copied; the arrays must outlive the stage calls.
+// Input of the texture atlas (paper §4.5): the triangle-mesh view of mesh/triangle_mesh.h with
+// the atlas's own per-face and per-vertex arrays, in the style of xatlas::MeshDecl. Nothing is
+// copied; the arrays must outlive the stage calls. The atlas's output (charts, per-corner UVs,
+// the texture) is its own (charts.h, packing.h, bake.h).
 //
 // The pipeline's meshes are voxel surfaces (closed quads split along a-c, so triangles 2k and
 // 2k+1 come from quad k), but nothing here assumes that: any triangle mesh is accepted.
+//
+// Errors follow the library's rule (base/error.h, doc/architecture.md): invalid arrays throw
+// MeshError, options out of range OptionError; a mesh without faces is no error, every stage
+// returns an empty result for it.
 #pragma once
+
+#include "mesh/triangle_mesh.h"
 
 #include <cstddef>
 #include <cstdint>
-#include <string>
 
 #include <glm/gtc/type_precision.hpp>
 #include <glm/vec3.hpp>
 
 namespace voxelfair {
 
-struct AtlasMesh {
-    const glm::vec3 *positions = nullptr;
-    size_t vertexCount = 0;
-    // Three vertex indices per face, counter-clockwise seen from outside.
-    const uint32_t *triangles = nullptr;
-    size_t faceCount = 0;
+struct AtlasMesh : TriangleMesh {
     // Optional. The crisp colour source: each face's voxel colour.
     const glm::u8vec3 *faceColours = nullptr;
-    // Optional. Smoothed per-vertex colours (section 4.4), for the paper's Gouraud bake.
+    // Optional. Smoothed per-vertex colours (§4.4), for the paper's Gouraud bake.
     const glm::u8vec3 *vertexColours = nullptr;
     // Optional. Face normals (any length); computed from the positions when null, or for a face
     // whose given normal is zero or not finite.
@@ -34,15 +36,8 @@ struct AtlasMesh {
     const float *faceTexelScale = nullptr;
 };
 
-enum class AtlasStatus {
-    Ok,
-    EmptyMesh,     // no faces: every stage returns an empty result
-    InvalidInput,  // null arrays with non-zero counts, or a vertex index out of range
-};
-
-const char *toString(AtlasStatus status);
-
-// Checks what every stage relies on; `message` says what is wrong when the result is not Ok.
-AtlasStatus validateAtlasMesh(const AtlasMesh &mesh, std::string *message);
+// Checks what every stage relies on: throws MeshError naming the first bad face (mesh/
+// validate(), then the texel scales). A mesh without faces passes.
+void validateAtlasMesh(const AtlasMesh &mesh);
 
 }  // namespace voxelfair

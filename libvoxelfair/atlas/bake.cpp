@@ -1,10 +1,12 @@
 #include "atlas/bake.h"
 
 #include "atlas/texel_raster.h"
+#include "base/error.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <string>
 
 #include <glm/common.hpp>
 
@@ -117,15 +119,12 @@ void dilate(Canvas &canvas, int rings) {
 
 AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const BakeOptions &options) {
     AtlasTexture out;
-    out.status = layout.status;
-    out.message = layout.message;
-    if (out.status != AtlasStatus::Ok)
-        return out;
-    if (layout.wedgeUv.size() != 3 * mesh.faceCount || layout.width <= 0 || layout.height <= 0) {
-        out.status = AtlasStatus::InvalidInput;
-        out.message = "the layout was made for another mesh";
-        return out;
-    }
+    if (mesh.faceCount == 0 && layout.wedgeUv.empty())
+        return out;  // nothing to bake
+    if (layout.wedgeUv.size() != 3 * mesh.faceCount || layout.width <= 0 || layout.height <= 0)
+        throw MeshError("the layout has " + std::to_string(layout.wedgeUv.size()) + " corner UVs on " +
+                        std::to_string(layout.width) + " x " + std::to_string(layout.height) + " texels for " +
+                        std::to_string(mesh.faceCount) + " faces: it was made for another mesh");
     out.source = chooseSource(mesh, options.source, out.note);
     out.size = out.width = layout.width;
     out.height = layout.height;

@@ -45,8 +45,6 @@ struct BakeOptions {
 };
 
 struct AtlasTexture {
-    AtlasStatus status = AtlasStatus::Ok;
-    std::string message;
     int size = 0;  // the width, kept from when textures were always square
     int width = 0, height = 0;
     // width x height RGBA8 texels, rows from the top of the image (v = 1) down, as PNG and QImage
@@ -63,6 +61,8 @@ struct AtlasTexture {
     }
 };
 
+// Throws MeshError when the layout was not packed for this mesh (3 UVs per face, a texture of
+// positive size); an empty texture for a mesh without faces and its empty layout.
 AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const BakeOptions &options = {});
 
 }  // namespace voxelfair

@@ -43,8 +43,8 @@ void radixSortByKey(std::vector<uint32_t> &items, std::vector<uint32_t> &keys) {
 
 AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
     AtlasCharts out;
-    out.status = validateAtlasMesh(mesh, &out.message);
-    if (out.status != AtlasStatus::Ok)
+    validateAtlasMesh(mesh);
+    if (mesh.faceCount == 0)
         return out;
     const size_t faceCount = mesh.faceCount;
     const float cone = options.minSeedCosine >= 0.05f ? std::min(options.minSeedCosine, 1.0f) : 0.05f;

@@ -46,9 +46,6 @@ struct ChartOptions {
 };
 
 struct AtlasCharts {
-    AtlasStatus status = AtlasStatus::Ok;
-    std::string message;
-
     // Chart c holds faces chartFaces[chartFirstFace[c] .. chartFirstFace[c + 1]), seed first,
     // then in breadth-first order. Charts are numbered in seed order; degenerate faces' charts last.
     std::vector<uint32_t> chartFirstFace;
@@ -80,6 +77,7 @@ struct AtlasCharts {
     }
 };
 
+// Throws MeshError for an invalid mesh (validateAtlasMesh); no charts for a mesh without faces.
 AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options = {});
 
 }  // namespace voxelfair

@@ -112,8 +112,8 @@ void projectAlone(const AtlasMesh &mesh, uint32_t f, glm::vec2 uv[3], glm::vec3 
 CrowdedFaces separateCrowdedFaces(const AtlasMesh &mesh, AtlasCharts &charts, const CrowdedFaceOptions &options) {
     CrowdedFaces out;
     const double d = options.texelsPerUnit;
-    if (mesh.faceColours == nullptr || charts.status != AtlasStatus::Ok || charts.faceCount() != mesh.faceCount ||
-        !(d > 0) || !std::isfinite(d))
+    if (mesh.faceColours == nullptr || mesh.faceCount == 0 || charts.faceCount() != mesh.faceCount || !(d > 0) ||
+        !std::isfinite(d))
         return out;
     const size_t entries = charts.chartFaces.size();
     auto colour = [&](size_t i) { return mesh.faceColours[charts.chartFaces[i]]; };

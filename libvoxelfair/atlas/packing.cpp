@@ -3,9 +3,11 @@
 #include "atlas/pack_paper.h"
 #include "atlas/pack_tight.h"
 #include "atlas/texel_raster.h"
+#include "base/error.h"
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace voxelfair {
 
@@ -155,18 +157,11 @@ void nextShape(bool wide, int &width, int &height) {
 AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
     AtlasLayout out;
     out.mode = options.mode;
-    out.status = charts.status;
-    out.message = charts.message;
-    if (charts.status != AtlasStatus::Ok)
+    if (charts.faceCount() == 0)
         return out;
     const int maxSide = largestPowerOfTwoAtMost(std::clamp(options.maxTextureSize, 1, kMaxSide));
     out.gutter = std::max(2, options.gutter + (options.gutter & 1));
     const int padding = out.gutter / 2;
-    auto fail = [&](std::string message) {
-        out.status = AtlasStatus::InvalidInput;
-        out.message = std::move(message);
-        return out;
-    };
 
     Packing packing;
     int height = 0;
@@ -177,11 +172,11 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
             height = out.size;  // the paper's square
         if (!densestFit(charts, options, padding, out.size, height, INFINITY, packing, out.texelsPerUnit,
                         out.packAttempts))
-            return fail("the charts do not fit a " + std::to_string(out.size) + " x " + std::to_string(height) +
-                        " texture at any density");
+            throw OptionError("the charts do not fit a " + std::to_string(out.size) + " x " + std::to_string(height) +
+                              " texture at any density");
     } else {
         if (!(options.texelsPerUnit > 0) || !std::isfinite(options.texelsPerUnit))
-            return fail("texelsPerUnit must be positive and finite");
+            throw OptionError("texelsPerUnit must be positive and finite");
         out.texelsPerUnit = options.texelsPerUnit;
         const bool wide = options.allowWide && options.mode == PackMode::Tight;
         bool fits = false;
@@ -224,10 +219,10 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
             out.densityReduced = true;
             if (!densestFit(charts, options, padding, out.size, height, options.texelsPerUnit, packing,
                             out.texelsPerUnit, out.packAttempts))
-                return fail("the charts do not fit a " + std::to_string(out.size) + " texture at any density");
-            out.message = "texels per unit lowered from " + std::to_string(options.texelsPerUnit) + " to " +
-                          std::to_string(out.texelsPerUnit) + " to fit " + std::to_string(out.size) + " x " +
-                          std::to_string(out.size);
+                throw OptionError("the charts do not fit a " + std::to_string(out.size) + " texture at any density");
+            out.note = "texels per unit lowered from " + std::to_string(options.texelsPerUnit) + " to " +
+                       std::to_string(out.texelsPerUnit) + " to fit " + std::to_string(out.size) + " x " +
+                       std::to_string(out.size);
         }
     }
     out.width = out.size;

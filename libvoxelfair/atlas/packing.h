@@ -67,9 +67,6 @@ struct PackOptions {
 };
 
 struct AtlasLayout {
-    AtlasStatus status = AtlasStatus::Ok;
-    std::string message;  // the error, or with Ok why the density was lowered
-
     PackMode mode = PackMode::Tight;
     // The texture is width x height texels, width >= height (2:1 at most unless textureHeight
     // asks otherwise). size is the width, kept from when the layout was always square.
@@ -77,7 +74,8 @@ struct AtlasLayout {
     int width = 0, height = 0;
     double texelsPerUnit = 0;  // the density used, identical for every chart
     bool densityReduced = false;
-    int gutter = 0;  // as used (even)
+    std::string note;  // why the density was lowered, when it was
+    int gutter = 0;    // as used (even)
     // Three per face, in [0, 1]^2 with v up (OpenGL / OBJ convention): texel (x, y) of the
     // width x height texture covers [x, x+1]/width x [y, y+1]/height.
     std::vector<glm::vec2> wedgeUv;
@@ -86,6 +84,8 @@ struct AtlasLayout {
     size_t nudgedFaces = 0;                  // slivers whose float UVs had lost their area, given 1/64 texel back
 };
 
+// Throws OptionError when texelsPerUnit is not positive and finite (density mode) or the charts fit
+// no allowed texture at any density; an empty layout (size 0, no UVs) for charts without faces.
 AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options = {});
 
 }  // namespace voxelfair

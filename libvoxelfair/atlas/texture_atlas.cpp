@@ -1,6 +1,7 @@
 #include "atlas/texture_atlas.h"
 
 #include "atlas/texel_raster.h"
+#include "base/error.h"
 
 #include <cmath>
 
@@ -19,13 +20,24 @@ double chartArea(const AtlasCharts &charts) {
     return area;
 }
 
+// Packs the charts again after a separation; false, the layout left as it was, when they no
+// longer fit any allowed texture (packCharts throws OptionError then).
+bool repack(const AtlasCharts &charts, const PackOptions &pack, AtlasLayout &layout) {
+    try {
+        layout = packCharts(charts, pack);
+        return true;
+    } catch (const OptionError &) {
+        return false;
+    }
+}
+
 }  // namespace
 
 TextureAtlas buildTextureAtlas(const AtlasMesh &mesh, const AtlasOptions &options) {
     TextureAtlas atlas;
     atlas.charts = computeCharts(mesh, options.charts);
     const bool crisp = options.maxSeparatedShare > 0 && options.bake.source == BakeSource::FaceColours &&
-                       mesh.faceColours != nullptr && atlas.charts.status == AtlasStatus::Ok;
+                       mesh.faceColours != nullptr && mesh.faceCount > 0;
     double separatedAt = 0;  // the density the charts were last separated for
     auto separate = [&](double density, double share) {
         atlas.crowded = separateCrowdedFaces(mesh, atlas.charts, {density, share});
@@ -60,8 +72,8 @@ TextureAtlas buildTextureAtlas(const AtlasMesh &mesh, const AtlasOptions &option
     AtlasCharts firstCharts;
     AtlasLayout firstLayout;
     CrowdedFaces firstCrowded;
-    for (int round = 0; crisp && round < (options.alwaysCrisp ? 8 : 4) && atlas.layout.status == AtlasStatus::Ok;
-         ++round) {
+    bool packed = true;  // false once the separated charts fit no allowed texture
+    for (int round = 0; crisp && round < (options.alwaysCrisp ? 8 : 4) && packed; ++round) {
         const double found = atlas.layout.texelsPerUnit;
         if (found >= separatedAt && separatedAt > 0)
             break;
@@ -76,13 +88,12 @@ TextureAtlas buildTextureAtlas(const AtlasMesh &mesh, const AtlasOptions &option
             firstCrowded = atlas.crowded;
         if (!separated)
             break;  // nothing more to separate: the layout stands
-        atlas.layout = packCharts(atlas.charts, pack);
+        packed = repack(atlas.charts, pack, atlas.layout);
     }
-    atlas.crispGuaranteed = crisp && atlas.layout.status == AtlasStatus::Ok && !atlas.crowded.overBudget() &&
-                            atlas.layout.texelsPerUnit >= separatedAt;
-    // Kept as well when separating made the charts too many for a fixed size at any density.
-    if (crisp && !atlas.crispGuaranteed && (!options.alwaysCrisp || atlas.layout.status != AtlasStatus::Ok) &&
-        !firstCharts.chartAxis.empty()) {
+    atlas.crispGuaranteed = crisp && packed && !atlas.crowded.overBudget() && atlas.layout.texelsPerUnit >= separatedAt;
+    // Kept as well when separating made the charts too many for a fixed size at any density (the
+    // first charts are always kept by then: round 0 stores them before repacking).
+    if (crisp && !atlas.crispGuaranteed && (!options.alwaysCrisp || !packed) && !firstCharts.chartAxis.empty()) {
         atlas.charts = std::move(firstCharts);
         atlas.layout = std::move(firstLayout);
         atlas.crowded = firstCrowded;

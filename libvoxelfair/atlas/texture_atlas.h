@@ -4,8 +4,7 @@
 // one, e.g. to repack or rebake with other options without recomputing the charts.
 //
 //   AtlasMesh mesh;  mesh.positions = ...; mesh.triangles = ...; mesh.faceColours = ...;
-//   TextureAtlas atlas = buildTextureAtlas(mesh);
-//   if (atlas.status() != AtlasStatus::Ok) report(atlas.message());
+//   TextureAtlas atlas = buildTextureAtlas(mesh);  // throws MeshError / OptionError (base/error.h)
 //   // atlas.layout.wedgeUv: 3 UVs per face; atlas.texture.rgba: the image, top row first.
 #pragma once
 
@@ -46,12 +45,11 @@ struct TextureAtlas {
     // The least density the layout was packed for, raised from PackOptions::texelsPerUnit when
     // too many faces were crowded at it (alwaysCrisp); 0 with a fixed texture size.
     double crispDensity = 0;
-
-    // The first failing stage's status and message (stages after a failure return empty).
-    AtlasStatus status() const { return texture.status; }
-    const std::string &message() const { return texture.message; }
 };
 
+// Throws what the stages throw: MeshError for an invalid mesh, OptionError for options out of range
+// or charts that fit no allowed texture. A mesh without faces gives an empty atlas (no charts, a
+// layout and texture of size 0).
 TextureAtlas buildTextureAtlas(const AtlasMesh &mesh, const AtlasOptions &options = {});
 
 }  // namespace voxelfair

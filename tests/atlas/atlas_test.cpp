@@ -4,6 +4,7 @@
 #include "atlas/edge_adjacency.h"
 #include "atlas/texel_raster.h"
 #include "atlas/texture_atlas.h"
+#include "base/error.h"
 
 #include <gtest/gtest.h>
 
@@ -101,7 +102,6 @@ glm::dvec3 geometricNormal(const TestMesh &m, size_t f) {
 // Everything an atlas must satisfy, whatever the mesh and options.
 void expectValidAtlas(const TestMesh &mesh, const AtlasCharts &charts, const AtlasLayout &layout, float cone) {
     SCOPED_TRACE(mesh.name + ", " + toString(layout.mode));
-    ASSERT_EQ(layout.status, AtlasStatus::Ok) << layout.message;
     ASSERT_EQ(layout.wedgeUv.size(), 3 * mesh.faceCount());
     for (const glm::vec2 &uv : layout.wedgeUv) {
         EXPECT_GE(uv.x, 0.0f);
@@ -221,7 +221,6 @@ TEST(Charts, FollowSection45OnEveryFamily) {
             ChartOptions options;
             options.minSeedCosine = cone;
             const AtlasCharts charts = computeCharts(mesh.view(), options);
-            ASSERT_EQ(charts.status, AtlasStatus::Ok);
             ASSERT_EQ(charts.chartFaces.size(), mesh.faceCount());
             float lastPriority = 2;
             for (size_t c = 0; c < charts.chartCount(); ++c) {
@@ -310,13 +309,11 @@ TEST(Charts, DegenerateAndNonFiniteFacesGetTheirOwnTinyCharts) {
     mesh.triangles.insert(mesh.triangles.end(), {0, 1, uint32_t(mesh.positions.size() - 1)});
     mesh.faceColours.push_back({1, 2, 3});
     const AtlasCharts charts = computeCharts(mesh.view(false, false));
-    ASSERT_EQ(charts.status, AtlasStatus::Ok);
     EXPECT_EQ(charts.degenerateFaces, 4u);
     EXPECT_EQ(charts.nonFiniteFaces, 1u);
     for (size_t f = mesh.faceCount() - 4; f < mesh.faceCount(); ++f)
         EXPECT_TRUE(charts.isDegenerate(charts.faceChart[f]));
     const AtlasLayout layout = packCharts(charts);
-    ASSERT_EQ(layout.status, AtlasStatus::Ok);
     EXPECT_EQ(measureAtlas(mesh.view(), charts, layout).facesWithoutUvArea, 0u);
 }
 
@@ -435,7 +432,6 @@ TEST(Packing, PaperSquareIsCentred) {
     paper.mode = PackMode::Paper;
     paper.textureSize = 512;
     const AtlasLayout layout = packCharts(charts, paper);
-    ASSERT_EQ(layout.status, AtlasStatus::Ok);
     glm::vec2 lo(1), hi(0);
     for (const glm::vec2 &uv : layout.wedgeUv)
         lo = glm::min(lo, uv), hi = glm::max(hi, uv);
@@ -453,7 +449,7 @@ TEST(Packing, DensityIsLoweredToFitTheLargestTexture) {
     const AtlasLayout layout = packCharts(charts, options);
     expectValidAtlas(mesh, charts, layout, 0.7f);
     EXPECT_TRUE(layout.densityReduced);
-    EXPECT_FALSE(layout.message.empty());
+    EXPECT_FALSE(layout.note.empty());
     EXPECT_EQ(layout.size, 256);
     EXPECT_LT(layout.texelsPerUnit, 64.0);
 }
@@ -470,7 +466,6 @@ TEST(Bake, CrispColoursSurviveNearestAndBilinearSampling) {
         AtlasOptions options;
         options.pack.texelsPerUnit = 16;
         const TextureAtlas atlas = buildTextureAtlas(mesh.view(), options);
-        ASSERT_EQ(atlas.status(), AtlasStatus::Ok) << atlas.message();
         EXPECT_EQ(atlas.texture.source, BakeSource::FaceColours);
         const ColourFidelity f = measureColourFidelity(mesh.view(), atlas.layout, atlas.texture);
         EXPECT_EQ(f.guaranteedNearestMatches, f.guaranteedNearest);
@@ -492,7 +487,6 @@ TEST(Bake, DilationFillsExactlyTheRequestedRings) {
         options.pack.gutter = 2 * rings;
         options.bake.dilation = rings;
         const TextureAtlas atlas = buildTextureAtlas(mesh.view(), options);
-        ASSERT_EQ(atlas.status(), AtlasStatus::Ok);
         const int size = atlas.texture.width, height = atlas.texture.height;
         std::vector<uint8_t> covered(size_t(size) * height, 0);
         for (size_t f = 0; f < mesh.faceCount(); ++f) {
@@ -523,7 +517,6 @@ TEST(Bake, GouraudStaysBetweenTheVertexColours) {
     options.bake.source = BakeSource::VertexColours;
     options.pack.texelsPerUnit = 8;
     const TextureAtlas atlas = buildTextureAtlas(mesh.view(), options);
-    ASSERT_EQ(atlas.status(), AtlasStatus::Ok);
     EXPECT_EQ(atlas.texture.source, BakeSource::VertexColours);
     const int size = atlas.texture.width, height = atlas.texture.height;
     for (size_t f = 0; f < mesh.faceCount(); ++f) {
@@ -563,45 +556,56 @@ TEST(Bake, FallsBackWhenColoursAreMissing) {
     EXPECT_GT(opaque, 0u);
 }
 
+// The message of the error of type E that `run` throws (a test failure when it throws none).
+template <class E, class Run>
+std::string thrownMessage(const Run &run) {
+    try {
+        run();
+    } catch (const E &e) {
+        return e.what();
+    }
+    ADD_FAILURE() << "no error thrown";
+    return {};
+}
+
 TEST(BadInput, EmptyInvalidAndImpossibleRequestsGiveMessagesNotCrashes) {
+    // No faces: an empty atlas, no error.
     AtlasMesh empty;
     TextureAtlas atlas = buildTextureAtlas(empty);
-    EXPECT_EQ(atlas.status(), AtlasStatus::EmptyMesh);
-    EXPECT_FALSE(atlas.message().empty());
+    EXPECT_EQ(atlas.charts.chartCount(), 0u);
     EXPECT_TRUE(atlas.layout.wedgeUv.empty());
+    EXPECT_EQ(atlas.layout.width, 0);
     EXPECT_TRUE(atlas.texture.rgba.empty());
 
     const TestMesh box = voxelBox(2, 1, 1);
     AtlasMesh noPositions = box.view();
     noPositions.positions = nullptr;
-    EXPECT_EQ(buildTextureAtlas(noPositions).status(), AtlasStatus::InvalidInput);
+    EXPECT_FALSE(thrownMessage<MeshError>([&] { buildTextureAtlas(noPositions); }).empty());
 
     std::vector<uint32_t> bad = box.triangles;
     bad[4] = 999;
     AtlasMesh outOfRange = box.view();
     outOfRange.triangles = bad.data();
-    atlas = buildTextureAtlas(outOfRange);
-    EXPECT_EQ(atlas.status(), AtlasStatus::InvalidInput);
-    EXPECT_NE(atlas.message().find("999"), std::string::npos) << atlas.message();
+    const std::string outOfRangeMessage = thrownMessage<MeshError>([&] { buildTextureAtlas(outOfRange); });
+    EXPECT_NE(outOfRangeMessage.find("999"), std::string::npos) << outOfRangeMessage;
+    EXPECT_NE(outOfRangeMessage.find("face 1"), std::string::npos) << outOfRangeMessage;
 
     const AtlasCharts charts = computeCharts(box.view());
     for (float density :
          {0.0f, -1.0f, std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {
         PackOptions options;
         options.texelsPerUnit = density;
-        const AtlasLayout layout = packCharts(charts, options);
-        EXPECT_EQ(layout.status, AtlasStatus::InvalidInput);
-        EXPECT_FALSE(layout.message.empty());
+        EXPECT_FALSE(thrownMessage<OptionError>([&] { packCharts(charts, options); }).empty());
     }
     // Thousands of charts cannot fit 8 x 8 texels at any density.
     const TestMesh sphere = voxelSphere(10);
     PackOptions tiny;
     tiny.textureSize = 8;
-    const AtlasLayout layout = packCharts(computeCharts(sphere.view()), tiny);
-    EXPECT_EQ(layout.status, AtlasStatus::InvalidInput);
-    EXPECT_FALSE(layout.message.empty());
-    const AtlasTexture texture = bakeTexture(sphere.view(), layout);
-    EXPECT_NE(texture.status, AtlasStatus::Ok);
+    const AtlasCharts sphereCharts = computeCharts(sphere.view());
+    EXPECT_FALSE(thrownMessage<OptionError>([&] { packCharts(sphereCharts, tiny); }).empty());
+    // A layout made for another mesh.
+    const AtlasLayout boxLayout = packCharts(charts);
+    EXPECT_FALSE(thrownMessage<MeshError>([&] { bakeTexture(sphere.view(), boxLayout); }).empty());
 }
 
 TEST(BadInput, NonManifoldEdgesAreChartBorders) {

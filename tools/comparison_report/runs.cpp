@@ -2,6 +2,8 @@
 
 #include "smoothers/vcg_taubin.h"
 
+#include "base/error.h"
+
 #include <algorithm>
 #include <chrono>
 #include <limits>
@@ -39,8 +41,15 @@ void finishVariant(Variant &v, const pipeline::Model &model, bool atlas) {
     v.displayNormals = pipeline::displayNormals(v.mesh, model, v.attributes.vertexNormals);
     if (!atlas)
         return;
-    v.atlasMs = bestMs(kRepeats, [&] { v.atlas = pipeline::buildAtlas(v.mesh, v.attributes); });
-    v.hasAtlas = v.atlas.status() == AtlasStatus::Ok;
+    try {
+        v.atlasMs = bestMs(kRepeats, [&] { v.atlas = pipeline::buildAtlas(v.mesh, v.attributes); });
+    } catch (const Error &e) {
+        v.atlasError = e.what();
+        return;
+    }
+    v.hasAtlas = v.atlas.charts.faceCount() > 0;
+    if (!v.hasAtlas)
+        v.atlasError = "no faces";
     if (v.hasAtlas)
         v.atlasVertices = pipeline::atlasVertexCount(v.atlas, v.attributes);
 }

@@ -22,6 +22,7 @@ struct Variant {
     TextureAtlas atlas;
     size_t atlasVertices = 0;
     bool hasAtlas = false;
+    std::string atlasError;                                   // why there is no atlas, when there is none
     std::vector<glm::vec3> displayPositions, displayNormals;  // model space, for pictures
 };
 

@@ -134,7 +134,7 @@ void writeCounts(std::ostream &out, const std::vector<ModelRun> &runs) {
              std::to_string(o.attributes.triangleCount()), o.hasAtlas ? std::to_string(o.atlasVertices) : "-",
              o.hasAtlas ? std::to_string(o.atlas.layout.wedgeUv.size() / 3) : "-",
              o.hasAtlas ? std::to_string(o.atlas.charts.chartCount()) : "-",
-             o.hasAtlas ? format("%dx%d", o.atlas.texture.width, o.atlas.texture.height) : o.atlas.message()});
+             o.hasAtlas ? format("%dx%d", o.atlas.texture.width, o.atlas.texture.height) : o.atlasError});
     }
     out << counts.markdown() << "\n";
 }
