@@ -2,10 +2,14 @@
 # the importer's own nodes, materials and texture sampling, a sun, a camera three-quarters
 # from the front (glTF +Z, Blender -Y) and above, Cycles on the CPU.
 #
-#   blender -b --factory-startup --python tools/blender_render_glb.py -- MODEL.glb OUT.png [SIZE]
+#   blender -b --factory-startup --python tools/blender_render_glb.py -- MODEL.glb OUT.png [SIZE] [--pair]
+#
+# --pair: two renders side by side in one picture, same camera and light: on the left without the
+# normal maps (the links out of the importer's Normal Map nodes cut), on the right as imported.
 #
 # Debian's Blender 3.4 glTF importer calls numpy's removed np.bool: set it before importing.
 import math
+import os
 import sys
 
 import numpy
@@ -15,6 +19,8 @@ import bpy  # noqa: E402
 from mathutils import Vector  # noqa: E402
 
 args = sys.argv[sys.argv.index("--") + 1:]
+pair = "--pair" in args
+args = [a for a in args if a != "--pair"]
 glb, out = args[0], args[1]
 size = int(args[2]) if len(args) > 2 else 640
 
@@ -50,7 +56,29 @@ scene.cycles.samples = 48
 scene.cycles.use_denoising = False  # Debian builds Blender without OpenImageDenoise
 scene.render.resolution_x = size
 scene.render.resolution_y = int(size * 0.75)
-scene.render.filepath = out
 scene.view_settings.view_transform = "Standard"
-bpy.ops.render.render(write_still=True)
+if not pair:
+    scene.render.filepath = out
+    bpy.ops.render.render(write_still=True)
+else:
+    normal_links = [(m.node_tree, link.from_socket, link.to_socket) for m in bpy.data.materials if m.node_tree
+                    for link in m.node_tree.links if link.from_node.type == "NORMAL_MAP"]
+    halves = []
+    for with_map in (False, True):
+        for tree, from_socket, to_socket in normal_links:
+            if with_map:
+                tree.links.new(from_socket, to_socket)
+            else:
+                tree.links.remove(next(l for l in tree.links if l.from_socket == from_socket and l.to_socket == to_socket))
+        scene.render.filepath = out + (".with.png" if with_map else ".without.png")
+        bpy.ops.render.render(write_still=True)
+        image = bpy.data.images.load(scene.render.filepath)
+        halves.append(numpy.array(image.pixels[:]).reshape(image.size[1], image.size[0], 4))
+        os.remove(scene.render.filepath)
+    both = numpy.concatenate(halves, axis=1)
+    picture = bpy.data.images.new("pair", both.shape[1], both.shape[0], alpha=True)
+    picture.pixels = both.ravel()
+    picture.filepath_raw = out
+    picture.file_format = "PNG"
+    picture.save()
 print(f"rendered {glb} -> {out}")
