@@ -42,9 +42,6 @@ void loadUv(const NormalBakeMesh &m, size_t f, int width, int height, glm::dvec2
         q[k] = glm::dvec2(m.wedgeUv[3 * f + size_t(k)]) * glm::dvec2(width, height);
 }
 
-uint8_t encode(float c) { return uint8_t(std::clamp(std::lround((c * 0.5f + 0.5f) * 255.0f), 0L, 255L)); }
-float decode(uint8_t c) { return float(c) / 255.0f * 2.0f - 1.0f; }
-
 }  // namespace
 
 std::vector<glm::vec4> targetTangents(const NormalBakeMesh &target) {
@@ -376,22 +373,22 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
 
     // The gutter: renormalised mean of the painted neighbours.
     dilateTexels(width, height, state, options.dilation, options.threads, [&](int x, int y) {
-        glm::vec3 sum(0.0f);
-        for (int dy = -1; dy <= 1; ++dy)
-            for (int dx = -1; dx <= 1; ++dx) {
-                const int nx = x + dx, ny = y + dy;
-                if (nx < 0 || ny < 0 || nx >= width || ny >= height ||
-                    !(state[size_t(ny) * size_t(width) + size_t(nx)] & kTexelPainted))
+        // The mean of the decoded neighbours, (2 c - 255) / 255 each, up to its scale: integers.
+        int sx = 0, sy = 0, sz = 0, n = 0;
+        for (int ny = std::max(y - 1, 0); ny <= std::min(y + 1, height - 1); ++ny)
+            for (int nx = std::max(x - 1, 0); nx <= std::min(x + 1, width - 1); ++nx) {
+                if (!(state[size_t(ny) * size_t(width) + size_t(nx)] & kTexelPainted))
                     continue;
                 const uint8_t *p = &out.rgba[(size_t(height - 1 - ny) * size_t(width) + size_t(nx)) * 4];
-                sum += glm::vec3(decode(p[0]), decode(p[1]), decode(p[2]));
+                sx += p[0], sy += p[1], sz += p[2], ++n;
             }
+        const glm::vec3 sum(float(2 * sx - 255 * n), float(2 * sy - 255 * n), float(2 * sz - 255 * n));
         const float length = glm::length(sum);
         if (!(length > 0.0f))
             return false;
-        sum /= length;
+        const glm::vec3 c = sum / length;
         uint8_t *p = &out.rgba[(size_t(height - 1 - y) * size_t(width) + size_t(x)) * 4];
-        p[0] = encode(sum.x), p[1] = encode(sum.y), p[2] = encode(sum.z);
+        p[0] = encodeFast(c.x), p[1] = encodeFast(c.y), p[2] = encodeFast(c.z);
         return true;
     });
     out.ok = true;
