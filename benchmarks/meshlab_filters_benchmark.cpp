@@ -47,7 +47,7 @@ struct Fixture {
         surface = extractSceneSurface(scene);
         original = document.addNewMesh("", "sphere");
         original->Enable(sceneImportMask());
-        sceneToMeshLab(surface, *original);
+        sceneToMeshLab(surface, PaletteKind::Westwood, *original);
     }
 
     // A copy of the imported mesh, current in the document (what the filters act on).

@@ -5,7 +5,7 @@
 #include <new>
 
 FilterVoxelfairPlugin::FilterVoxelfairPlugin() {
-    typeList << FP_LANCZOS_FAIRING << FP_ATTRIBUTE_SMOOTHING << FP_TEXTURE_ATLAS << FP_NORMAL_MAP;
+    typeList << FP_LANCZOS_FAIRING << FP_ATTRIBUTE_SMOOTHING << FP_TEXTURE_ATLAS << FP_NORMAL_MAP << FP_HOUSE_MASK;
     for (FilterIDType id : types())
         actionList << new QAction(filterName(id), this);
 }
@@ -16,6 +16,7 @@ QString FilterVoxelfairPlugin::filterName(FilterIDType filter) const {
     case FP_ATTRIBUTE_SMOOTHING: return "Voxel Fairing: Attribute Smoothing";
     case FP_TEXTURE_ATLAS: return "Voxel Texture Atlas: Greedy Charts";
     case FP_NORMAL_MAP: return "Voxel Texture: Bake Normal Map";
+    case FP_HOUSE_MASK: return "Voxel Texture: Bake House Colour Mask";
     }
     return QString();
 }
@@ -57,6 +58,15 @@ QString FilterVoxelfairPlugin::filterInfo(FilterIDType filter) const {
                "as source.<br>Tangents are MikkTSpace's (the convention of glTF, Blender, Unity, Unreal and Godot), "
                "computed from the current layer's vertex normals and texture coordinates; green is +V (OpenGL / glTF "
                "convention). The map is a PNG with a gutter like the base colour's.";
+    case FP_HOUSE_MASK:
+        return "Beyond the SBGames 2010 paper: the house (team) colours of a Westwood VXL model as a mask texture in "
+               "the atlas' layout. A texel is white where its voxel uses the palette's remap range (indices 16-31), "
+               "the colours Tiberian Sun and Red Alert 2 tint per player, black elsewhere; the base colour keeps "
+               "the palette's own colours. An engine multiplies the base colour by the player's colour where the "
+               "mask is white.<br>Run it right after Voxel Texture Atlas, on the layer the atlas was built on "
+               "(before duplicating or decimating: the decimated mesh keeps the atlas' layout, so the mask fits it "
+               "too). The glTF exporter embeds the mask and names it in the material's extras "
+               "(<tt>voxelfair_house_colour_mask</tt>).";
     }
     return QString();
 }
@@ -68,6 +78,7 @@ MeshFilterInterface::FilterClass FilterVoxelfairPlugin::getClass(QAction *action
     case FP_ATTRIBUTE_SMOOTHING: return FilterClass(MeshFilterInterface::Normal | MeshFilterInterface::VertexColoring);
     case FP_TEXTURE_ATLAS: return MeshFilterInterface::Texture;
     case FP_NORMAL_MAP: return MeshFilterInterface::Texture;
+    case FP_HOUSE_MASK: return MeshFilterInterface::Texture;
     }
     return MeshFilterInterface::Smoothing;
 }
@@ -90,6 +101,7 @@ int FilterVoxelfairPlugin::postCondition(QAction *action) const {
                MeshModel::MM_POLYGONAL;
     case FP_TEXTURE_ATLAS: return MeshModel::MM_WEDGTEXCOORD;
     case FP_NORMAL_MAP: return MeshModel::MM_NONE;
+    case FP_HOUSE_MASK: return MeshModel::MM_NONE;
     }
     return MeshModel::MM_ALL;
 }
@@ -168,6 +180,14 @@ void FilterVoxelfairPlugin::initParameterSet(QAction *action, MeshModel &m, Rich
         parameters.addParam(RichString("textureFile", defaultTextureName(m), "Texture file",
                                        "The PNG to write: a relative name is put beside the mesh's file."));
         break;
+    case FP_HOUSE_MASK:
+        parameters.addParam(RichString("houseFile", defaultHouseMaskName(m), "House colour mask file",
+                                       "The PNG to write (greyscale, the base colour's size): a relative name is put "
+                                       "beside the mesh's file."));
+        parameters.addParam(
+            RichInt("dilation", 2, "Gutter rings",
+                    "Rings of texels filled around the charts, as the base colour's (half its gutter)."));
+        break;
     }
 }
 
@@ -221,6 +241,7 @@ bool FilterVoxelfairPlugin::applyFilter(QAction *action, MeshDocument &md, const
         case FP_ATTRIBUTE_SMOOTHING: return applyAttributeSmoothing(*m, parameters, cb);
         case FP_TEXTURE_ATLAS: return applyTextureAtlas(*m, parameters, cb);
         case FP_NORMAL_MAP: return applyNormalMap(md, parameters, cb);
+        case FP_HOUSE_MASK: return applyHouseMask(*m, parameters, cb);
         }
         return fail("unknown filter");
     } catch (const std::bad_alloc &) {

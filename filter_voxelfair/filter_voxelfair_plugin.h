@@ -10,6 +10,8 @@
 QString defaultTextureName(const MeshModel &m);
 // The normal map a mesh's bake is written to by default: "NAME_normal.png" for "NAME_texture.png".
 QString defaultNormalMapName(const MeshModel &m);
+// The house colour mask's default file: "NAME_house.png" for "NAME_texture.png".
+QString defaultHouseMaskName(const MeshModel &m);
 
 class FilterVoxelfairPlugin : public QObject, public MeshFilterInterface {
     Q_OBJECT
@@ -21,7 +23,8 @@ public:
         FP_LANCZOS_FAIRING,      // section 4.3
         FP_ATTRIBUTE_SMOOTHING,  // section 4.4
         FP_TEXTURE_ATLAS,        // section 4.5
-        FP_NORMAL_MAP            // beyond the paper (its future work): tangent-space normal map
+        FP_NORMAL_MAP,           // beyond the paper (its future work): tangent-space normal map
+        FP_HOUSE_MASK            // beyond the paper: VXL house colours (remap range) as a mask texture
     };
 
     FilterVoxelfairPlugin();
@@ -44,6 +47,7 @@ private:
     bool applyAttributeSmoothing(MeshModel &m, const RichParameterList &parameters, vcg::CallBackPos *cb);
     bool applyTextureAtlas(MeshModel &m, const RichParameterList &parameters, vcg::CallBackPos *cb);
     bool applyNormalMap(MeshDocument &md, const RichParameterList &parameters, vcg::CallBackPos *cb);
+    bool applyHouseMask(MeshModel &m, const RichParameterList &parameters, vcg::CallBackPos *cb);
 
     // Sets errorMessage, logs it and writes it to stderr (meshlabserver never prints errorMessage).
     bool fail(const QString &message);

@@ -88,6 +88,8 @@ bool restoreParts(MeshModel &target, MeshModel &source) {
     if (!target.hasDataMask(MeshModel::MM_FACEQUALITY))
         return false;
     storeExportScene(*scene, target.cm);
+    if (const MaterialMapFiles *maps = findMaterialMaps(source.cm))  // the maps baked in the same layout
+        storeMaterialMaps(*maps, target.cm);
     if (!vcg::tri::HasPerFaceAttribute(target.cm, kPartAttributeName)) {
         auto part = vcg::tri::Allocator<CMeshO>::GetPerFaceAttribute<int>(target.cm, kPartAttributeName);
         for (CFaceO &f : target.cm.face)

@@ -226,6 +226,21 @@ bool IoGltfPlugin::save(const QString &, const QString &fileName, MeshModel &m, 
             }
         }
 
+        // The maps the material filters baked in the base colour's layout (house colour mask).
+        QString houseMaskPath;
+        if (const MaterialMapFiles *maps = findMaterialMaps(cm); maps != nullptr && wedgeUv && !texture.png.empty()) {
+            if (!maps->houseMask.empty()) {
+                const QString name = QString::fromStdString(maps->houseMask);
+                houseMaskPath = findTexture(name, fileName, m);
+                if (!houseMaskPath.isEmpty()) {
+                    options.houseMask.png = pngBytes(houseMaskPath);
+                    options.houseMask.name = local(QFileInfo(houseMaskPath).completeBaseName());
+                }
+                if (options.houseMask.png.empty())
+                    report(QString("%1: house colour mask %2 not found; exported without it").arg(fileName, name));
+            }
+        }
+
         if (cb)
             cb(50, "Writing glTF");
         const std::vector<uint8_t> bytes =
@@ -249,6 +264,9 @@ bool IoGltfPlugin::save(const QString &, const QString &fileName, MeshModel &m, 
         if (!mesh.cornerTangents.empty())
             report(QString("%1: normal map %2 embedded (normalTexture, MikkTSpace TANGENT)")
                        .arg(QFileInfo(fileName).fileName(), QFileInfo(normalMapPath).fileName()));
+        if (!options.houseMask.png.empty())
+            report(QString("%1: house colour mask %2 embedded (material extras voxelfair_house_colour_mask)")
+                       .arg(QFileInfo(fileName).fileName(), QFileInfo(houseMaskPath).fileName()));
         if (unplaced > 0)
             report(QString("%1 faces had no part node and went to the first node").arg(unplaced));
         (void)mask;

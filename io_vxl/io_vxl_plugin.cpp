@@ -229,7 +229,7 @@ void IoVxlPlugin::openVxl(const QString &path, const ImportSettings &settings, M
             sections += file.model.sections.size();
     }
 
-    const SceneSurface surface = meshScene(path, scene, m, mask, cb);
+    const SceneSurface surface = meshScene(path, scene, PaletteKind::Westwood, m, mask, cb);
     if (!nodes.empty())
         storeExportScene(nodes, m.cm);
     if (files.size() > 1)
@@ -264,7 +264,7 @@ void IoVxlPlugin::openVox(const QString &path, const ImportSettings &settings, M
     const std::vector<uint8_t> bytes = readBytes(path);
     const VoxFile file = readVox(bytes.data(), bytes.size());
     const VoxelScene scene = voxScene(file, VoxSceneOptions{settings.frame});
-    meshScene(path, scene, m, mask, cb);
+    meshScene(path, scene, PaletteKind::MagicaVoxel, m, mask, cb);
     storeExportScene(voxExportNodes(file, settings.frame), m.cm);
     report(QString("%1: MagicaVoxel version %2, %3 models, %4 instances shown at frame %5 of %6; palette: %7")
                .arg(QFileInfo(path).fileName())
@@ -276,8 +276,8 @@ void IoVxlPlugin::openVox(const QString &path, const ImportSettings &settings, M
                .arg(file.defaultPalette ? "MagicaVoxel's default (the file has none)" : "the file's"));
 }
 
-SceneSurface IoVxlPlugin::meshScene(const QString &path, const VoxelScene &scene, MeshModel &m, int &mask,
-                                    vcg::CallBackPos *cb) {
+SceneSurface IoVxlPlugin::meshScene(const QString &path, const VoxelScene &scene, PaletteKind kind, MeshModel &m,
+                                    int &mask, vcg::CallBackPos *cb) {
     size_t voxels = 0;
     for (const PlacedVolume &part : scene.parts)
         voxels += part.volume->voxelCount();
@@ -291,7 +291,7 @@ SceneSurface IoVxlPlugin::meshScene(const QString &path, const VoxelScene &scene
         cb(80, "Building the mesh");
     mask |= sceneImportMask();
     m.Enable(mask);
-    sceneToMeshLab(surface, m);
+    sceneToMeshLab(surface, kind, m);
     report(QString("%1: %2 parts, %3 voxels -> %4 quads, %5 vertices; manifold surface: %6 non-manifold edges and "
                    "%7 non-manifold vertices split, %8 enclosed cavity voxels filled")
                .arg(QFileInfo(path).fileName())

@@ -10,6 +10,7 @@ namespace voxelfair {
 struct ImportSettings;
 struct SceneSurface;
 struct VoxelScene;
+enum class PaletteKind : int;
 }  // namespace voxelfair
 
 class IoVxlPlugin : public QObject, public MeshIOInterface {
@@ -36,8 +37,8 @@ private:
     void openVox(const QString &path, const voxelfair::ImportSettings &settings, MeshModel &m, int &mask,
                  vcg::CallBackPos *cb);
     // Extracts the scene's surface into `m` and reports it; throws when there is nothing to mesh.
-    voxelfair::SceneSurface meshScene(const QString &path, const voxelfair::VoxelScene &scene, MeshModel &m, int &mask,
-                                      vcg::CallBackPos *cb);
+    voxelfair::SceneSurface meshScene(const QString &path, const voxelfair::VoxelScene &scene,
+                                      voxelfair::PaletteKind kind, MeshModel &m, int &mask, vcg::CallBackPos *cb);
 
     // Writes an information line to MeshLab's log and to stderr (meshlabserver's importer has no log).
     void report(const QString &message);

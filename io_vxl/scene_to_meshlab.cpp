@@ -11,7 +11,7 @@ int sceneImportMask() {
            Mask::IOM_BITPOLYGONAL;
 }
 
-void sceneToMeshLab(const SceneSurface &surface, MeshModel &model) {
+void sceneToMeshLab(const SceneSurface &surface, PaletteKind kind, MeshModel &model) {
     CMeshO &m = model.cm;
     m.Clear();
     auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(m, surface.positions.size());
@@ -21,6 +21,8 @@ void sceneToMeshLab(const SceneSurface &surface, MeshModel &model) {
     }
 
     auto part = vcg::tri::Allocator<CMeshO>::GetPerFaceAttribute<int>(m, kPartAttributeName);
+    auto paletteIndex = vcg::tri::Allocator<CMeshO>::GetPerFaceAttribute<uint8_t>(m, kPaletteIndexAttributeName);
+    vcg::tri::Allocator<CMeshO>::GetPerMeshAttribute<int>(m, kPaletteKindAttributeName)() = int(kind);
     auto fi = vcg::tri::Allocator<CMeshO>::AddFaces(m, 2 * surface.quadCount());
     for (size_t q = 0; q < surface.quadCount(); ++q) {
         const uint32_t *c = &surface.quads[4 * q];
@@ -35,6 +37,7 @@ void sceneToMeshLab(const SceneSurface &surface, MeshModel &model) {
             fi->C() = vcg::Color4b(colour.r, colour.g, colour.b, 255);
             fi->Q() = CMeshO::ScalarType(surface.quadParts[q]);
             part[fi] = surface.quadParts[q];
+            paletteIndex[fi] = surface.quadVoxels[q].colour;
         }
     }
     // meshlabserver does not compute the box for polygonal imports: do it here.

@@ -8,17 +8,56 @@
 #include <common/meshmodel.h>
 #include <vcg/complex/allocate.h>
 
+#include <cstdint>
+#include <string>
+
 namespace voxelfair {
 
 // Name of the per-face int attribute holding the part (VXL section, VOX instance) of each face.
 // The same number is written to the face quality, which MeshLab's PLY exporter can save.
 constexpr const char *kPartAttributeName = "voxelfair_part";
 
+// Name of the per-face uint8_t attribute holding each face's voxel palette index (VXL: the index
+// into the section's palette, 16..31 being the house colours; VOX: the colour index, which is
+// also the MATL material id). The material filters bake it into maps (maps/house_mask.h).
+constexpr const char *kPaletteIndexAttributeName = "voxelfair_palette_index";
+
+// What the palette indices mean: a per-mesh int attribute set by the importer.
+enum class PaletteKind : int { Westwood = 1, MagicaVoxel = 2 };
+constexpr const char *kPaletteKindAttributeName = "voxelfair_palette_kind";
+
+// The maps baked beside the base colour for exporters (io_gltf): file names as the filters wrote
+// them (relative to the base colour's folder) and the material-wide factors. A per-mesh attribute;
+// Bake Normal Map copies it onto the decimated layer with the parts.
+struct MaterialMapFiles {
+    std::string houseMask;          // grey: 255 where the house colour shows
+    std::string metallicRoughness;  // glTF channels: G roughness, B metallic
+    std::string emissive;           // sRGB emitted colour
+    std::string transmission;       // R: transmission
+    float emissiveStrength = 1.0f;  // KHR_materials_emissive_strength when > 1
+    float ior = 0.0f;               // KHR_materials_ior when > 0
+};
+constexpr const char *kMaterialMapsAttributeName = "voxelfair_material_maps";
+
+inline void storeMaterialMaps(const MaterialMapFiles &maps, CMeshO &m) {
+    auto handle = vcg::tri::Allocator<CMeshO>::GetPerMeshAttribute<MaterialMapFiles>(m, kMaterialMapsAttributeName);
+    handle() = maps;
+}
+
+// The stored maps, or null when no filter baked any.
+inline const MaterialMapFiles *findMaterialMaps(CMeshO &m) {
+    if (!vcg::tri::HasPerMeshAttribute(m, kMaterialMapsAttributeName))
+        return nullptr;
+    auto handle = vcg::tri::Allocator<CMeshO>::FindPerMeshAttribute<MaterialMapFiles>(m, kMaterialMapsAttributeName);
+    return vcg::tri::Allocator<CMeshO>::IsValidHandle(m, handle) ? &handle() : nullptr;
+}
+
 // The MeshLab import mask for what sceneToMeshLab fills.
 int sceneImportMask();
 
-// Replaces the content of `model` with `surface`. `model` must have had Enable(sceneImportMask()).
-void sceneToMeshLab(const SceneSurface &surface, MeshModel &model);
+// Replaces the content of `model` with `surface` (positions, polygons, colours, parts, palette
+// indices, the palette kind). `model` must have had Enable(sceneImportMask()).
+void sceneToMeshLab(const SceneSurface &surface, PaletteKind kind, MeshModel &model);
 
 // The model's parts for exporters (export/export_scene.h) travel with the mesh as a per-mesh
 // attribute, through every filter, to io_gltf; faces name their node by the per-face part.

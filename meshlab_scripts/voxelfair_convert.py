@@ -11,7 +11,9 @@ meshlabserver with voxelfair's plugins:
                   the faired layer, and the faired layer's shading baked into the decimated mesh's
                   tangent-space normal map (beyond the paper); writes NAME.ply, NAME.obj
                   (+ NAME.obj.mtl naming both maps) and NAME.glb (glTF 2.0, texture embedded, one
-                  node per part, animation) with NAME_texture.png and NAME_normal.png beside them
+                  node per part, animation) with NAME_texture.png and NAME_normal.png beside them;
+                  a VXL model's house colours (palette 16-31) as the mask NAME_house.png, also
+                  embedded in the .glb (material extras voxelfair_house_colour_mask)
                   --lods 1,0.25,0.05 (shares of the faired mesh's faces) writes levels of detail
                   instead: NAME_lod0.glb, NAME_lod1.glb, ... from one atlas (NAME_texture.png,
                   shared: decimation with texture keeps the UVs), each decimated copy of the
@@ -189,9 +191,9 @@ def matte_mtl(path):
     path.write_text("\n".join(lines) + "\n")
 
 
-def pipeline_script(args, texture, normal):
+def pipeline_script(args, texture, normal, house=None):
     """The full-pipeline .mlx with this run's values; the decimation (and with it the layer copy and
-    the normal map) is left out at ratio 1."""
+    the normal map) is left out at ratio 1, the house colour mask without `house` (not a VXL)."""
     text = (HERE / "voxelfair_pipeline.mlx").read_text()
     values = {
         "MODE": "1" if args.fairing == "constrained" else "0",
@@ -200,6 +202,7 @@ def pipeline_script(args, texture, normal):
         "TEXELS_PER_VOXEL": repr(args.texels_per_voxel),
         "COLOURS": "1" if args.colours == "smoothed" else "0",
         "TEXTURE_FILE": str(texture), "DECIMATION": repr(args.decimate), "NORMAL_FILE": str(normal),
+        "HOUSE_FILE": str(house or ""),
     }
     for key, value in values.items():
         text = text.replace(f"@{key}@", value.replace("&", "&amp;").replace('"', "&quot;"))
@@ -208,6 +211,8 @@ def pipeline_script(args, texture, normal):
         text = re.sub(r' <filter name="Voxel Texture: Bake Normal Map">.*?</filter>\n', "", text, flags=re.S)
     if args.decimate >= 1.0:
         text = re.sub(r' <filter name="Simplification:.*?</filter>\n', "", text, flags=re.S)
+    if house is None:
+        text = re.sub(r' <filter name="Voxel Texture: Bake House Colour Mask">.*?</filter>\n', "", text, flags=re.S)
     return text
 
 
@@ -351,9 +356,12 @@ def convert(model, args, run):
     texture = out / f"{name}_texture.png"
     normal = out / f"{name}_normal.png"
     with_normal = args.decimate < 1.0 and not args.no_normal_map
+    house = out / f"{name}_house.png" if model.suffix.lower() == ".vxl" else None  # remap range: VXL only
+    maps = [normal] if with_normal else []
+    maps += [house] if house else []
     with tempfile.TemporaryDirectory(prefix="voxelfair-script-") as tmp:
         script = Path(tmp) / "pipeline.mlx"
-        script.write_text(pipeline_script(args, texture, normal))
+        script.write_text(pipeline_script(args, texture, normal, house))
         # Saved without face colours: the texture holds them now, and vcglib's OBJ writer would
         # otherwise make one material per face colour. The .glb is written by the same run: the
         # parts' node tree travels with the imported mesh through the filters.
@@ -361,9 +369,10 @@ def convert(model, args, run):
         if "glb" in args.formats:
             arguments += ["-o", str(glb), "-m", "wt", "vn"]
         code, output, _ = run(arguments + ["-s", str(script)])
-    check([ply, texture] + ([normal] if with_normal else []) + ([glb] if "glb" in args.formats else []), code, output)
+    check([ply, texture] + maps + ([glb] if "glb" in args.formats else []), code, output)
     details += [line.split(": ", 1)[1] for line in output.splitlines()
-                if line.startswith(("filter_voxelfair: Texture Atlas", "filter_voxelfair: Bake Normal Map"))]
+                if line.startswith(("filter_voxelfair: Texture Atlas", "filter_voxelfair: Bake Normal Map",
+                                    "filter_voxelfair: Bake House Colour Mask"))]
     details += ["glTF " + line.split(": ", 2)[2] for line in output.splitlines() if line.startswith("io_gltf: ")]
     if "obj" in args.formats:
         code, output, _ = run(["-i", str(ply), "-o", str(obj), "-m", "wt", "vn"])
@@ -375,7 +384,7 @@ def convert(model, args, run):
             turn_obj(obj, to_y_up(model))
     if "ply" in args.formats and args.up_ply == "y":
         turn_ply(ply, to_y_up(model))
-    outputs = [ply, texture] + ([normal] if with_normal else []) + [out / f"{name}.{f}" for f in ("obj", "glb") if f in args.formats]
+    outputs = [ply, texture] + maps + [out / f"{name}.{f}" for f in ("obj", "glb") if f in args.formats]
     if "ply" not in args.formats:
         ply.unlink()
         outputs.remove(ply)

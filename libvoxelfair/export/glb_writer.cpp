@@ -318,6 +318,20 @@ std::vector<uint8_t> writeGlb(const GlbMesh &mesh, const ExportScene &inputScene
             model.textures.push_back(t);
             m.normalTexture.index = int(model.textures.size() - 1);
         }
+        if (!options.houseMask.png.empty() && !mesh.cornerUvs.empty() && !model.samplers.empty()) {
+            tinygltf::Image image;
+            image.name = options.houseMask.name;
+            image.mimeType = "image/png";
+            image.bufferView = bin.view(options.houseMask.png.data(), options.houseMask.png.size(), 0);
+            model.images.push_back(image);
+            tinygltf::Texture t;
+            t.source = int(model.images.size() - 1);
+            t.sampler = 0;  // the base colour's: the mask lines up with it texel for texel
+            model.textures.push_back(t);
+            tinygltf::Value::Object reference{{"index", tinygltf::Value(int(model.textures.size() - 1))}};
+            tinygltf::Value::Object extras{{"voxelfair_house_colour_mask", tinygltf::Value(reference)}};
+            m.extras = tinygltf::Value(extras);
+        }
         model.materials.push_back(m);
         material = 0;
     }

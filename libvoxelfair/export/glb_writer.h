@@ -22,6 +22,10 @@
 //    from GlbMesh::cornerTangents: the MikkTSpace frame the map was baked against (maps/), computed
 //    with v up, so the map's green is +V as glTF's normalTexture expects; corners split where their
 //    tangents differ.
+//  - House colour mask (when GlbOptions::houseMask has a PNG): a texture with the base colour's
+//    sampler, named from the material's extras as
+//    "extras": {"voxelfair_house_colour_mask": {"index": TEXTURE}} (glTF's place for
+//    application-specific data; TEXTURE indexes "textures", sampled with TEXCOORD_0).
 //
 // The options struct is the place for later additions (normal maps, tangents, more textures):
 // each new field gets a default that leaves today's output unchanged.
@@ -58,6 +62,9 @@ struct GlbOptions {
     std::string name = "voxelfair";  // the scene's and the single node's name
     std::string generator = "voxelfair";
     GlbTexture normalMap;  // empty: no normalTexture, no TANGENT
+    // A VXL model's house colour mask (maps/house_mask.h) in the base colour's layout: white where
+    // an engine tints by the player's colour. Empty: none.
+    GlbTexture houseMask;
 };
 
 // A triangle mesh in model space; the corner arrays hold 3 entries per triangle.

@@ -195,8 +195,9 @@ struct QuadMesh {
     std::vector<uint32_t> offsets;  // polygon offsets (4 * q), for the polygon-array units
     std::vector<uint32_t> quads;
     std::vector<glm::u8vec3> quadColours;
-    std::vector<uint32_t> quadPart;  // index into the scene's parts
-    float voxelSize = 1.0f;          // edge length of one voxel in the mesh's units
+    std::vector<uint32_t> quadPart;         // index into the scene's parts
+    std::vector<uint8_t> quadPaletteIndex;  // the palette index of each quad's voxel
+    float voxelSize = 1.0f;                 // edge length of one voxel in the mesh's units
 
     size_t quadCount() const { return quads.size() / 4; }
     size_t vertexCount() const { return positions.size(); }
@@ -215,6 +216,9 @@ inline QuadMesh extract(const VoxelScene &scene) {
     mesh.quadColours.reserve(surface.quadColours.size());
     for (const Rgb &c : surface.quadColours)
         mesh.quadColours.emplace_back(c.r, c.g, c.b);
+    mesh.quadPaletteIndex.reserve(surface.quadVoxels.size());
+    for (const Voxel &v : surface.quadVoxels)
+        mesh.quadPaletteIndex.push_back(v.colour);
     for (size_t part = 0; part < surface.partQuadCounts.size(); ++part)
         mesh.quadPart.insert(mesh.quadPart.end(), surface.partQuadCounts[part], uint32_t(part));
     const float size = detectVoxelSize(mesh.view());

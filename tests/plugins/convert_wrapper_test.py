@@ -45,7 +45,8 @@ class ConvertWrapper(unittest.TestCase):
         code, output = wrapper(self.work, "models/tank.vxl", "-o", "out")
         self.assertEqual(code, 0, output)
         out = self.work / "out"
-        for name in ("tank.ply", "tank.obj", "tank.obj.mtl", "tank_texture.png", "tank_normal.png", "tank.glb"):
+        for name in ("tank.ply", "tank.obj", "tank.obj.mtl", "tank_texture.png", "tank_normal.png", "tank_house.png",
+                     "tank.glb"):
             self.assertTrue((out / name).is_file() and (out / name).stat().st_size > 0, f"{name} missing\n{output}")
         self.assertEqual((out / "tank_texture.png").read_bytes()[:8], b"\x89PNG\r\n\x1a\n")
         self.assertIn("comment TextureFile tank_texture.png", ply_header(out / "tank.ply"))
@@ -68,6 +69,15 @@ class ConvertWrapper(unittest.TestCase):
         gltf = json.loads(data[20:20 + struct.unpack("<I", data[12:16])[0]])
         self.assertIn("normalTexture", gltf["materials"][0])
         self.assertTrue(all("TANGENT" in p["attributes"] for m in gltf["meshes"] for p in m["primitives"]))
+        # The house colour mask (palette 16-31) beside the base colour and in the material's extras,
+        # the same PNG embedded.
+        self.assertEqual((out / "tank_house.png").read_bytes()[:8], b"\x89PNG\r\n\x1a\n")
+        self.assertIn("Bake House Colour Mask:", output)
+        mask = gltf["materials"][0]["extras"]["voxelfair_house_colour_mask"]
+        view = gltf["bufferViews"][gltf["images"][gltf["textures"][mask["index"]]["source"]]["bufferView"]]
+        binary = 20 + struct.unpack("<I", data[12:16])[0] + 8
+        start = binary + view.get("byteOffset", 0)
+        self.assertEqual(data[start:start + view["byteLength"]], (out / "tank_house.png").read_bytes())
         # Nothing written beside the input model.
         self.assertEqual(sorted(p.name for p in self.inputs.iterdir()), self.before)
         self.assertIn("Texture Atlas:", output)

@@ -25,7 +25,7 @@ namespace {
 const std::string kTank = std::string(VOXELFAIR_EXAMPLE_DIR) + "/tank.vxl";
 
 // The pipeline template with this test's values (decimation left out at ratio 1).
-std::string pipelineScript(const std::string &dir, const std::string &texture, double decimation) {
+std::string pipelineScript(const std::string &dir, const std::string &texture, double decimation, bool vxl) {
     std::ifstream in(std::string(VOXELFAIR_SCRIPTS_DIR) + "/voxelfair_pipeline.mlx");
     std::string text((std::istreambuf_iterator<char>(in)), {});
     const std::pair<std::string, std::string> values[] = {{"@MODE@", "0"},
@@ -36,7 +36,8 @@ std::string pipelineScript(const std::string &dir, const std::string &texture, d
                                                           {"@COLOURS@", "0"},
                                                           {"@TEXTURE_FILE@", texture},
                                                           {"@DECIMATION@", std::to_string(decimation)},
-                                                          {"@NORMAL_FILE@", dir + "/normal.png"}};
+                                                          {"@NORMAL_FILE@", dir + "/normal.png"},
+                                                          {"@HOUSE_FILE@", dir + "/house.png"}};
     for (const auto &[key, value] : values)
         for (size_t at; (at = text.find(key)) != std::string::npos;)
             text.replace(at, key.size(), value);
@@ -46,6 +47,10 @@ std::string pipelineScript(const std::string &dir, const std::string &texture, d
              {" <filter name=\"Simplification:[^]*?</filter>\n", " <filter name=\"Duplicate Current layer\"/>\n",
               " <filter name=\"Voxel Texture: Bake Normal Map\">[^]*?</filter>\n"})
             text = std::regex_replace(text, std::regex(filter), "");
+    // House colours are a VXL palette's (as the wrapper does).
+    if (!vxl)
+        text = std::regex_replace(
+            text, std::regex(" <filter name=\"Voxel Texture: Bake House Colour Mask\">[^]*?</filter>\n"), "");
     const std::string path = dir + "/pipeline.mlx";
     std::ofstream(path) << text;
     return path;
@@ -86,8 +91,9 @@ PipelineResult runPipeline(double decimation, const std::string &model = kTank) 
     const std::string dir = makeTempDir();
     const std::string name = fs::path(model).stem().string();
     const std::string texture = dir + "/" + name + "_texture.png";
-    const MeshlabRun run = runMeshlabServer(
-        {"-i", model, "-o", dir + "/out.ply", "-m", "wt", "fc", "sa", "-s", pipelineScript(dir, texture, decimation)});
+    const MeshlabRun run =
+        runMeshlabServer({"-i", model, "-o", dir + "/out.ply", "-m", "wt", "fc", "sa", "-s",
+                          pipelineScript(dir, texture, decimation, fs::path(model).extension() == ".vxl")});
     PipelineResult result;
     result.output = run.output;
     result.exitCode = run.exitCode;
