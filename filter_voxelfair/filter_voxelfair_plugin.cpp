@@ -5,7 +5,8 @@
 #include <new>
 
 FilterVoxelfairPlugin::FilterVoxelfairPlugin() {
-    typeList << FP_LANCZOS_FAIRING << FP_ATTRIBUTE_SMOOTHING << FP_TEXTURE_ATLAS << FP_NORMAL_MAP << FP_HOUSE_MASK;
+    typeList << FP_LANCZOS_FAIRING << FP_ATTRIBUTE_SMOOTHING << FP_TEXTURE_ATLAS << FP_NORMAL_MAP << FP_HOUSE_MASK
+             << FP_MATERIAL_MAPS;
     for (FilterIDType id : types())
         actionList << new QAction(filterName(id), this);
 }
@@ -17,6 +18,7 @@ QString FilterVoxelfairPlugin::filterName(FilterIDType filter) const {
     case FP_TEXTURE_ATLAS: return "Voxel Texture Atlas: Greedy Charts";
     case FP_NORMAL_MAP: return "Voxel Texture: Bake Normal Map";
     case FP_HOUSE_MASK: return "Voxel Texture: Bake House Colour Mask";
+    case FP_MATERIAL_MAPS: return "Voxel Texture: Bake Material Maps";
     }
     return QString();
 }
@@ -67,6 +69,15 @@ QString FilterVoxelfairPlugin::filterInfo(FilterIDType filter) const {
                "(before duplicating or decimating: the decimated mesh keeps the atlas' layout, so the mask fits it "
                "too). The glTF exporter embeds the mask and names it in the material's extras "
                "(<tt>voxelfair_house_colour_mask</tt>).";
+    case FP_MATERIAL_MAPS:
+        return "Beyond the SBGames 2010 paper (its future work: material maps): the MagicaVoxel materials of a .vox "
+               "model (MATL chunks: metal, roughness, emission and its power, glass with transmission and index of "
+               "refraction) as glTF PBR maps in the atlas' layout: a metallic-roughness map (G roughness, B metallic), "
+               "an emissive map (the voxel colour at its emission) and a transmission map, each only when some "
+               "voxel needs it. Diffuse voxels stay matte (metallic 0, roughness 0.9).<br>Run it right after Voxel "
+               "Texture Atlas, on the layer the atlas was built on (before duplicating or decimating). The glTF "
+               "exporter embeds the maps (metallicRoughnessTexture, emissiveTexture with "
+               "KHR_materials_emissive_strength above 1, KHR_materials_transmission and KHR_materials_ior).";
     }
     return QString();
 }
@@ -79,6 +90,7 @@ MeshFilterInterface::FilterClass FilterVoxelfairPlugin::getClass(QAction *action
     case FP_TEXTURE_ATLAS: return MeshFilterInterface::Texture;
     case FP_NORMAL_MAP: return MeshFilterInterface::Texture;
     case FP_HOUSE_MASK: return MeshFilterInterface::Texture;
+    case FP_MATERIAL_MAPS: return MeshFilterInterface::Texture;
     }
     return MeshFilterInterface::Smoothing;
 }
@@ -102,6 +114,7 @@ int FilterVoxelfairPlugin::postCondition(QAction *action) const {
     case FP_TEXTURE_ATLAS: return MeshModel::MM_WEDGTEXCOORD;
     case FP_NORMAL_MAP: return MeshModel::MM_NONE;
     case FP_HOUSE_MASK: return MeshModel::MM_NONE;
+    case FP_MATERIAL_MAPS: return MeshModel::MM_NONE;
     }
     return MeshModel::MM_ALL;
 }
@@ -188,6 +201,20 @@ void FilterVoxelfairPlugin::initParameterSet(QAction *action, MeshModel &m, Rich
             RichInt("dilation", 2, "Gutter rings",
                     "Rings of texels filled around the charts, as the base colour's (half its gutter)."));
         break;
+    case FP_MATERIAL_MAPS:
+        parameters.addParam(
+            RichString("metallicRoughnessFile", defaultMaterialMapName(m, "_metallic_roughness.png"),
+                       "Metallic-roughness map file",
+                       "The PNG to write (G roughness, B metallic) when some voxel is metal or rough; a "
+                       "relative name is put beside the mesh's file."));
+        parameters.addParam(RichString("emissiveFile", defaultMaterialMapName(m, "_emissive.png"), "Emissive map file",
+                                       "The PNG to write when some voxel emits light."));
+        parameters.addParam(RichString("transmissionFile", defaultMaterialMapName(m, "_transmission.png"),
+                                       "Transmission map file", "The PNG to write when some voxel is glass."));
+        parameters.addParam(
+            RichInt("dilation", 2, "Gutter rings",
+                    "Rings of texels filled around the charts, as the base colour's (half its gutter)."));
+        break;
     }
 }
 
@@ -242,6 +269,7 @@ bool FilterVoxelfairPlugin::applyFilter(QAction *action, MeshDocument &md, const
         case FP_TEXTURE_ATLAS: return applyTextureAtlas(*m, parameters, cb);
         case FP_NORMAL_MAP: return applyNormalMap(md, parameters, cb);
         case FP_HOUSE_MASK: return applyHouseMask(*m, parameters, cb);
+        case FP_MATERIAL_MAPS: return applyMaterialMaps(*m, parameters, cb);
         }
         return fail("unknown filter");
     } catch (const std::bad_alloc &) {

@@ -12,6 +12,8 @@ QString defaultTextureName(const MeshModel &m);
 QString defaultNormalMapName(const MeshModel &m);
 // The house colour mask's default file: "NAME_house.png" for "NAME_texture.png".
 QString defaultHouseMaskName(const MeshModel &m);
+// A material map's default file: "NAME<suffix>" for "NAME_texture.png".
+QString defaultMaterialMapName(const MeshModel &m, const QString &suffix);
 
 class FilterVoxelfairPlugin : public QObject, public MeshFilterInterface {
     Q_OBJECT
@@ -24,7 +26,8 @@ public:
         FP_ATTRIBUTE_SMOOTHING,  // section 4.4
         FP_TEXTURE_ATLAS,        // section 4.5
         FP_NORMAL_MAP,           // beyond the paper (its future work): tangent-space normal map
-        FP_HOUSE_MASK            // beyond the paper: VXL house colours (remap range) as a mask texture
+        FP_HOUSE_MASK,           // beyond the paper: VXL house colours (remap range) as a mask texture
+        FP_MATERIAL_MAPS         // beyond the paper (its future work: material maps): VOX materials as PBR maps
     };
 
     FilterVoxelfairPlugin();
@@ -48,6 +51,7 @@ private:
     bool applyTextureAtlas(MeshModel &m, const RichParameterList &parameters, vcg::CallBackPos *cb);
     bool applyNormalMap(MeshDocument &md, const RichParameterList &parameters, vcg::CallBackPos *cb);
     bool applyHouseMask(MeshModel &m, const RichParameterList &parameters, vcg::CallBackPos *cb);
+    bool applyMaterialMaps(MeshModel &m, const RichParameterList &parameters, vcg::CallBackPos *cb);
 
     // Sets errorMessage, logs it and writes it to stderr (meshlabserver never prints errorMessage).
     bool fail(const QString &message);

@@ -1,16 +1,19 @@
 // The per-voxel attribute maps in the base colour's atlas layout (libvoxelfair/maps):
 //  * Bake House Colour Mask: a VXL model's remap-range voxels (house colours, maps/house_mask.h).
+//  * Bake Material Maps: a VOX model's MATL materials as glTF PBR maps (maps/material_maps.h).
 // Each reads the palette index io_vxl keeps per face, bakes on the layer the atlas was built on
 // (before any decimation: a decimated face spans several voxels) and records the file for the
 // exporters (MaterialMapFiles, io_vxl/scene_to_meshlab.h).
 #include "filter_voxelfair_plugin.h"
 
 #include "maps/house_mask.h"
+#include "maps/material_maps.h"
 
 #include "../io_vxl/scene_to_meshlab.h"
 
 #include <QDir>
 #include <QElapsedTimer>
+#include <QFile>
 #include <QFileInfo>
 #include <QImage>
 #include <QImageReader>
@@ -107,6 +110,7 @@ QString baseColourPath(const MeshModel &m, const QString &mapPath) {
 }  // namespace
 
 QString defaultHouseMaskName(const MeshModel &m) { return mapNameFor(m, "_house.png"); }
+QString defaultMaterialMapName(const MeshModel &m, const QString &suffix) { return mapNameFor(m, suffix); }
 
 bool FilterVoxelfairPlugin::applyHouseMask(MeshModel &m, const RichParameterList &parameters, vcg::CallBackPos *cb) {
     QElapsedTimer timer;
@@ -155,5 +159,80 @@ bool FilterVoxelfairPlugin::applyHouseMask(MeshModel &m, const RichParameterList
                .arg(QFileInfo(texture).fileName())
                .arg(path)
                .arg(timer.elapsed()));
+    return true;
+}
+
+bool FilterVoxelfairPlugin::applyMaterialMaps(MeshModel &m, const RichParameterList &parameters, vcg::CallBackPos *cb) {
+    QElapsedTimer timer;
+    timer.start();
+    if (m.cm.fn == 0)
+        return fail("Bake Material Maps: the mesh has no faces");
+    if (!m.hasDataMask(MeshModel::MM_WEDGTEXCOORD) || m.cm.textures.empty())
+        return fail("Bake Material Maps: the mesh has no texture atlas; run Voxel Texture Atlas first");
+    FaceArrays arrays;
+    const VoxMaterialTable *materials = findVoxMaterials(m.cm);
+    if (!readFaceArrays(m.cm, arrays) || materials == nullptr || paletteKind(m.cm) != PaletteKind::MagicaVoxel)
+        return fail("Bake Material Maps: the mesh has no MagicaVoxel materials per face; import a .vox with "
+                    "voxelfair's importer (and bake before duplicating or decimating)");
+
+    const auto pathOf = [&](const char *parameter, const char *suffix) {
+        const QString given = parameters.getString(parameter).trimmed();
+        return besideMesh(m, given.isEmpty() ? defaultMaterialMapName(m, suffix) : given);
+    };
+    const QString metalRoughPath = pathOf("metallicRoughnessFile", "_metallic_roughness.png");
+    const QString emissivePath = pathOf("emissiveFile", "_emissive.png");
+    const QString transmissionPath = pathOf("transmissionFile", "_transmission.png");
+    const QString texture = baseColourPath(m, metalRoughPath);
+    const QSize size = QImageReader(texture).size();
+    if (!size.isValid())
+        return fail(QString("Bake Material Maps: could not read the size of the base colour texture %1").arg(texture));
+    if (cb)
+        cb(10, "Baking the material maps");
+    const MaterialMaps maps = bakeMaterialMaps(arrays.view(), arrays.paletteIndex.data(), arrays.colours.data(),
+                                               *materials, size.width(), size.height(), parameters.getInt("dilation"));
+    if (cb)
+        cb(80, "Writing the material maps");
+    // Stale maps of an earlier bake would be taken for this one's.
+    for (const QString &path : {metalRoughPath, emissivePath, transmissionPath})
+        QFile::remove(path);
+    MaterialMapFiles files;
+    if (const MaterialMapFiles *stored = findMaterialMaps(m.cm))
+        files = *stored;
+    QStringList written;
+    const auto save = [&](const std::vector<uint8_t> &pixels, int channels, const QString &path, std::string &name) {
+        name.clear();
+        if (pixels.empty())
+            return true;
+        const QImage image(pixels.data(), maps.width, maps.height, maps.width * channels,
+                           channels == 1 ? QImage::Format_Grayscale8 : QImage::Format_RGB888);
+        if (!QDir().mkpath(QFileInfo(path).absolutePath()) || !image.save(path, "PNG"))
+            return false;
+        name = QFileInfo(path).fileName().toStdString();
+        written << QFileInfo(path).fileName();
+        return true;
+    };
+    if (!save(maps.metallicRoughness, 3, metalRoughPath, files.metallicRoughness) ||
+        !save(maps.emissive, 3, emissivePath, files.emissive) ||
+        !save(maps.transmission, 1, transmissionPath, files.transmission))
+        return fail(QString("Bake Material Maps: could not write the maps beside %1").arg(metalRoughPath));
+    files.emissiveStrength = maps.emissive.empty() ? 1.0f : maps.emissiveStrength;
+    files.ior = maps.transmission.empty() ? 0.0f : maps.ior;
+    storeMaterialMaps(files, m.cm);
+    report(QString("Bake Material Maps: %1 MATL materials; of %2 faces %3 metal or rough, %4 emissive (strength %5), "
+                   "%6 transmissive (ior %7) -> %8 in %9 ms")
+               .arg(materials->chunks)
+               .arg(arrays.paletteIndex.size())
+               .arg(maps.metalRoughFaces)
+               .arg(maps.emissiveFaces)
+               .arg(double(maps.emissiveStrength), 0, 'g', 3)
+               .arg(maps.transmissiveFaces)
+               .arg(double(maps.ior), 0, 'g', 3)
+               .arg(written.isEmpty() ? QString("no map needed (every voxel is diffuse)") : written.join(", "))
+               .arg(timer.elapsed()));
+    if (materials->ignoredValues + materials->ignoredChunks > 0)
+        report(QString("Bake Material Maps: %1 unreadable MATL values (not numbers, unknown types) and %2 material ids "
+                       "outside 1..255 were ignored")
+                   .arg(materials->ignoredValues)
+                   .arg(materials->ignoredChunks));
     return true;
 }

@@ -89,6 +89,16 @@ void voxSeeds(const fs::path &root) {
              .model(1, 1, 3, {{0, 0, 2, 3}})
              .bytes());
     save(root, "fuzz_vox", "sponge.vox", VoxWriter().model(9, 9, 9, mengerSponge(2)).bytes());
+    // MATL materials of every type (formats/vox_materials.h), one with unreadable values.
+    save(root, "fuzz_vox", "materials.vox",
+         VoxWriter()
+             .model(2, 1, 1, {{0, 0, 0, 1}, {1, 0, 0, 2}})
+             .material(1, {{"_type", "_emit"}, {"_emit", "0.5"}, {"_flux", "2"}})
+             .material(2, {{"_type", "_glass"}, {"_alpha", "0.7"}, {"_ior", "0.3"}, {"_rough", "0.2"}})
+             .material(3, {{"_type", "_metal"}, {"_metal", "1"}, {"_rough", "x"}})
+             .material(4, {{"_type", "_blend"}, {"_metal", "0.3"}, {"_trans", "0.5"}, {"_emit", "0.2"}})
+             .material(256, {{"_type", "_media"}})
+             .bytes(200));
     // Teardown's TDCZ: an unfinished zlib stream of the dense volume (teardown.vox seeds it too).
     Bytes dense(4 * 3 * 5, 0);
     for (size_t i = 0; i < dense.size(); i += 3)

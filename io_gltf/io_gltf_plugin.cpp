@@ -226,19 +226,29 @@ bool IoGltfPlugin::save(const QString &, const QString &fileName, MeshModel &m, 
             }
         }
 
-        // The maps the material filters baked in the base colour's layout (house colour mask).
-        QString houseMaskPath;
+        // The maps the material filters baked in the base colour's layout (house colour mask, PBR maps).
+        QStringList embedded;
         if (const MaterialMapFiles *maps = findMaterialMaps(cm); maps != nullptr && wedgeUv && !texture.png.empty()) {
-            if (!maps->houseMask.empty()) {
-                const QString name = QString::fromStdString(maps->houseMask);
-                houseMaskPath = findTexture(name, fileName, m);
-                if (!houseMaskPath.isEmpty()) {
-                    options.houseMask.png = pngBytes(houseMaskPath);
-                    options.houseMask.name = local(QFileInfo(houseMaskPath).completeBaseName());
+            const auto load = [&](const std::string &file, GlbTexture &into, const char *what) {
+                if (file.empty())
+                    return;
+                const QString name = QString::fromStdString(file);
+                const QString path = findTexture(name, fileName, m);
+                if (!path.isEmpty()) {
+                    into.png = pngBytes(path);
+                    into.name = local(QFileInfo(path).completeBaseName());
                 }
-                if (options.houseMask.png.empty())
-                    report(QString("%1: house colour mask %2 not found; exported without it").arg(fileName, name));
-            }
+                if (into.png.empty())
+                    report(QString("%1: %2 %3 not found; exported without it").arg(fileName, what, name));
+                else
+                    embedded << QString("%1 %2").arg(what, QFileInfo(path).fileName());
+            };
+            load(maps->houseMask, options.houseMask, "house colour mask");
+            load(maps->metallicRoughness, options.metallicRoughness, "metallic-roughness map");
+            load(maps->emissive, options.emissive, "emissive map");
+            load(maps->transmission, options.transmission, "transmission map");
+            options.emissiveStrength = maps->emissiveStrength;
+            options.ior = maps->ior;
         }
 
         if (cb)
@@ -264,9 +274,8 @@ bool IoGltfPlugin::save(const QString &, const QString &fileName, MeshModel &m, 
         if (!mesh.cornerTangents.empty())
             report(QString("%1: normal map %2 embedded (normalTexture, MikkTSpace TANGENT)")
                        .arg(QFileInfo(fileName).fileName(), QFileInfo(normalMapPath).fileName()));
-        if (!options.houseMask.png.empty())
-            report(QString("%1: house colour mask %2 embedded (material extras voxelfair_house_colour_mask)")
-                       .arg(QFileInfo(fileName).fileName(), QFileInfo(houseMaskPath).fileName()));
+        if (!embedded.isEmpty())
+            report(QString("%1: embedded %2").arg(QFileInfo(fileName).fileName(), embedded.join(", ")));
         if (unplaced > 0)
             report(QString("%1 faces had no part node and went to the first node").arg(unplaced));
         (void)mask;

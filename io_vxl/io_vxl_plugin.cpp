@@ -266,6 +266,7 @@ void IoVxlPlugin::openVox(const QString &path, const ImportSettings &settings, M
     const VoxelScene scene = voxScene(file, VoxSceneOptions{settings.frame});
     meshScene(path, scene, PaletteKind::MagicaVoxel, m, mask, cb);
     storeExportScene(voxExportNodes(file, settings.frame), m.cm);
+    storeVoxMaterials(file.materials, m.cm);
     report(QString("%1: MagicaVoxel version %2, %3 models, %4 instances shown at frame %5 of %6; palette: %7")
                .arg(QFileInfo(path).fileName())
                .arg(file.version)
@@ -274,6 +275,20 @@ void IoVxlPlugin::openVox(const QString &path, const ImportSettings &settings, M
                .arg(settings.frame)
                .arg(file.frameCount)
                .arg(file.defaultPalette ? "MagicaVoxel's default (the file has none)" : "the file's"));
+    if (file.materials.chunks > 0) {
+        size_t special = 0;
+        for (const VoxMaterial &material : file.materials.byIndex)
+            special += material.type != VoxMaterialType::Diffuse ? 1 : 0;
+        report(QString("%1: %2 MATL materials, %3 of them not diffuse%4")
+                   .arg(QFileInfo(path).fileName())
+                   .arg(file.materials.chunks)
+                   .arg(special)
+                   .arg(file.materials.ignoredValues + file.materials.ignoredChunks > 0
+                            ? QString("; %1 unreadable values and %2 material ids outside 1..255 ignored")
+                                  .arg(file.materials.ignoredValues)
+                                  .arg(file.materials.ignoredChunks)
+                            : QString()));
+    }
 }
 
 SceneSurface IoVxlPlugin::meshScene(const QString &path, const VoxelScene &scene, PaletteKind kind, MeshModel &m,

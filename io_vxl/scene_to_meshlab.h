@@ -3,6 +3,7 @@
 #pragma once
 
 #include "export/export_scene.h"
+#include "formats/vox_materials.h"
 #include "scene/voxel_scene.h"
 
 #include <common/meshmodel.h>
@@ -49,6 +50,21 @@ inline const MaterialMapFiles *findMaterialMaps(CMeshO &m) {
     if (!vcg::tri::HasPerMeshAttribute(m, kMaterialMapsAttributeName))
         return nullptr;
     auto handle = vcg::tri::Allocator<CMeshO>::FindPerMeshAttribute<MaterialMapFiles>(m, kMaterialMapsAttributeName);
+    return vcg::tri::Allocator<CMeshO>::IsValidHandle(m, handle) ? &handle() : nullptr;
+}
+
+// A VOX model's MATL materials by colour index, for Bake Material Maps: a per-mesh attribute.
+constexpr const char *kVoxMaterialsAttributeName = "voxelfair_vox_materials";
+
+inline void storeVoxMaterials(const VoxMaterialTable &materials, CMeshO &m) {
+    auto handle = vcg::tri::Allocator<CMeshO>::GetPerMeshAttribute<VoxMaterialTable>(m, kVoxMaterialsAttributeName);
+    handle() = materials;
+}
+
+inline const VoxMaterialTable *findVoxMaterials(CMeshO &m) {
+    if (!vcg::tri::HasPerMeshAttribute(m, kVoxMaterialsAttributeName))
+        return nullptr;
+    auto handle = vcg::tri::Allocator<CMeshO>::FindPerMeshAttribute<VoxMaterialTable>(m, kVoxMaterialsAttributeName);
     return vcg::tri::Allocator<CMeshO>::IsValidHandle(m, handle) ? &handle() : nullptr;
 }
 

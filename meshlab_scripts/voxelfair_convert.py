@@ -13,12 +13,14 @@ meshlabserver with voxelfair's plugins:
                   (+ NAME.obj.mtl naming both maps) and NAME.glb (glTF 2.0, texture embedded, one
                   node per part, animation) with NAME_texture.png and NAME_normal.png beside them;
                   a VXL model's house colours (palette 16-31) as the mask NAME_house.png, also
-                  embedded in the .glb (material extras voxelfair_house_colour_mask)
+                  embedded in the .glb (material extras voxelfair_house_colour_mask); a VOX
+                  model's MATL materials as NAME_metallic_roughness.png, NAME_emissive.png and
+                  NAME_transmission.png (those its voxels need), glTF PBR in the .glb
                   --lods 1,0.25,0.05 (shares of the faired mesh's faces) writes levels of detail
                   instead: NAME_lod0.glb, NAME_lod1.glb, ... from one atlas (NAME_texture.png,
                   shared: decimation with texture keeps the UVs), each decimated copy of the
                   faired layer with its own normal map NAME_lodN_normal.png baked from the full
-                  faired mesh
+                  faired mesh, and the same house mask or material maps
   --mode import   the voxel surface only: NAME.ply with face colours and each face's section
   --mode compare  the same input through voxelfair's fairing (paper and constrained modes), through
                   MeshLab's Taubin, HC Laplacian and TwoStep Smooth, and (when the build has
@@ -191,9 +193,10 @@ def matte_mtl(path):
     path.write_text("\n".join(lines) + "\n")
 
 
-def pipeline_script(args, texture, normal, house=None):
+def pipeline_script(args, texture, normal, house=None, materials=None):
     """The full-pipeline .mlx with this run's values; the decimation (and with it the layer copy and
-    the normal map) is left out at ratio 1, the house colour mask without `house` (not a VXL)."""
+    the normal map) is left out at ratio 1, the house colour mask without `house` (not a VXL), the
+    material maps without `materials` (not a VOX: metallic-roughness, emissive, transmission paths)."""
     text = (HERE / "voxelfair_pipeline.mlx").read_text()
     values = {
         "MODE": "1" if args.fairing == "constrained" else "0",
@@ -204,6 +207,8 @@ def pipeline_script(args, texture, normal, house=None):
         "TEXTURE_FILE": str(texture), "DECIMATION": repr(args.decimate), "NORMAL_FILE": str(normal),
         "HOUSE_FILE": str(house or ""),
     }
+    for key, path in zip(("METAL_ROUGH_FILE", "EMISSIVE_FILE", "TRANSMISSION_FILE"), materials or ("", "", "")):
+        values[key] = str(path)
     for key, value in values.items():
         text = text.replace(f"@{key}@", value.replace("&", "&amp;").replace('"', "&quot;"))
     if args.decimate >= 1.0 or args.no_normal_map:
@@ -213,6 +218,8 @@ def pipeline_script(args, texture, normal, house=None):
         text = re.sub(r' <filter name="Simplification:.*?</filter>\n', "", text, flags=re.S)
     if house is None:
         text = re.sub(r' <filter name="Voxel Texture: Bake House Colour Mask">.*?</filter>\n', "", text, flags=re.S)
+    if materials is None:
+        text = re.sub(r' <filter name="Voxel Texture: Bake Material Maps">.*?</filter>\n', "", text, flags=re.S)
     return text
 
 
@@ -250,6 +257,18 @@ def lod_script(text, lods, normals):
     return text[:begin] + "".join(blocks) + text[end:]
 
 
+def layout_maps(model, out):
+    """The maps baked in the atlas' layout that fit the input: a VXL's house colour mask (the
+    remap range), a VOX's material maps (metallic-roughness, emissive, transmission; each written
+    only when some voxel needs it). Returns (house or None, materials or None)."""
+    name = model.stem
+    house = out / f"{name}_house.png" if model.suffix.lower() == ".vxl" else None
+    materials = None
+    if model.suffix.lower() == ".vox":
+        materials = tuple(out / f"{name}_{m}.png" for m in ("metallic_roughness", "emissive", "transmission"))
+    return house, materials
+
+
 def convert_lods(model, args, run):
     """--lods: one meshlabserver run writes NAME_lodN.glb for every share (layer N + 1 of the
     document); returns (outputs, details)."""
@@ -261,7 +280,8 @@ def convert_lods(model, args, run):
         script = Path(tmp) / "pipeline.mlx"
         # The single-mesh script with a copy and a normal map (decimation below 1), then repeated.
         single = argparse.Namespace(**dict(vars(args), decimate=0.5, no_normal_map=False))
-        text = lod_script(pipeline_script(single, texture, normals[0]), args.lods, normals)
+        house, materials = layout_maps(model, out)
+        text = lod_script(pipeline_script(single, texture, normals[0], house, materials), args.lods, normals)
         if args.no_normal_map:
             text = re.sub(r' <filter name="Voxel Texture: Bake Normal Map">.*?</filter>\n', "", text, flags=re.S)
         script.write_text(text)
@@ -269,10 +289,12 @@ def convert_lods(model, args, run):
         for level, glb in enumerate(glbs):
             arguments += ["-o", str(glb), "-l", str(level + 1), "-m", "wt", "vn"]
         code, output, _ = run(arguments + ["-s", str(script)])
-    maps = [] if args.no_normal_map else normals
+    maps = ([] if args.no_normal_map else normals) + ([house] if house else [])
     check([texture] + maps + glbs, code, output)
+    maps += [m for m in materials or () if m.is_file()]
     details = [line.split(": ", 1)[1] for line in output.splitlines()
-               if line.startswith(("filter_voxelfair: Texture Atlas", "filter_voxelfair: Bake Normal Map"))]
+               if line.startswith(("filter_voxelfair: Texture Atlas", "filter_voxelfair: Bake Normal Map",
+                                   "filter_voxelfair: Bake House Colour Mask", "filter_voxelfair: Bake Material Maps"))]
     return [texture] + maps + glbs, details
 
 
@@ -356,12 +378,12 @@ def convert(model, args, run):
     texture = out / f"{name}_texture.png"
     normal = out / f"{name}_normal.png"
     with_normal = args.decimate < 1.0 and not args.no_normal_map
-    house = out / f"{name}_house.png" if model.suffix.lower() == ".vxl" else None  # remap range: VXL only
+    house, materials = layout_maps(model, out)
     maps = [normal] if with_normal else []
     maps += [house] if house else []
     with tempfile.TemporaryDirectory(prefix="voxelfair-script-") as tmp:
         script = Path(tmp) / "pipeline.mlx"
-        script.write_text(pipeline_script(args, texture, normal, house))
+        script.write_text(pipeline_script(args, texture, normal, house, materials))
         # Saved without face colours: the texture holds them now, and vcglib's OBJ writer would
         # otherwise make one material per face colour. The .glb is written by the same run: the
         # parts' node tree travels with the imported mesh through the filters.
@@ -372,7 +394,9 @@ def convert(model, args, run):
     check([ply, texture] + maps + ([glb] if "glb" in args.formats else []), code, output)
     details += [line.split(": ", 1)[1] for line in output.splitlines()
                 if line.startswith(("filter_voxelfair: Texture Atlas", "filter_voxelfair: Bake Normal Map",
-                                    "filter_voxelfair: Bake House Colour Mask"))]
+                                    "filter_voxelfair: Bake House Colour Mask",
+                                    "filter_voxelfair: Bake Material Maps"))]
+    maps += [m for m in materials or () if m.is_file()]
     details += ["glTF " + line.split(": ", 2)[2] for line in output.splitlines() if line.startswith("io_gltf: ")]
     if "obj" in args.formats:
         code, output, _ = run(["-i", str(ply), "-o", str(obj), "-m", "wt", "vn"])

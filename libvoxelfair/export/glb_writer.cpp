@@ -318,19 +318,57 @@ std::vector<uint8_t> writeGlb(const GlbMesh &mesh, const ExportScene &inputScene
             model.textures.push_back(t);
             m.normalTexture.index = int(model.textures.size() - 1);
         }
-        if (!options.houseMask.png.empty() && !mesh.cornerUvs.empty() && !model.samplers.empty()) {
+        // A map in the base colour's layout: its own image, the base colour's sampler (it lines up
+        // with it texel for texel). Returns the texture index, or -1 without a base colour.
+        const bool baseColour = !mesh.cornerUvs.empty() && !model.samplers.empty();
+        const auto layoutMap = [&](const GlbTexture &png) {
+            if (png.png.empty() || !baseColour)
+                return -1;
             tinygltf::Image image;
-            image.name = options.houseMask.name;
+            image.name = png.name;
             image.mimeType = "image/png";
-            image.bufferView = bin.view(options.houseMask.png.data(), options.houseMask.png.size(), 0);
+            image.bufferView = bin.view(png.png.data(), png.png.size(), 0);
             model.images.push_back(image);
             tinygltf::Texture t;
             t.source = int(model.images.size() - 1);
-            t.sampler = 0;  // the base colour's: the mask lines up with it texel for texel
+            t.sampler = 0;
             model.textures.push_back(t);
-            tinygltf::Value::Object reference{{"index", tinygltf::Value(int(model.textures.size() - 1))}};
+            return int(model.textures.size() - 1);
+        };
+        const auto use = [&](const char *extension) {
+            if (std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(), extension) ==
+                model.extensionsUsed.end())
+                model.extensionsUsed.push_back(extension);
+        };
+        if (const int index = layoutMap(options.houseMask); index >= 0) {
+            tinygltf::Value::Object reference{{"index", tinygltf::Value(index)}};
             tinygltf::Value::Object extras{{"voxelfair_house_colour_mask", tinygltf::Value(reference)}};
             m.extras = tinygltf::Value(extras);
+        }
+        if (const int index = layoutMap(options.metallicRoughness); index >= 0) {
+            m.pbrMetallicRoughness.metallicRoughnessTexture.index = index;
+            m.pbrMetallicRoughness.metallicFactor = 1.0;
+            m.pbrMetallicRoughness.roughnessFactor = 1.0;
+        }
+        if (const int index = layoutMap(options.emissive); index >= 0) {
+            m.emissiveTexture.index = index;
+            m.emissiveFactor = {1.0, 1.0, 1.0};
+            if (options.emissiveStrength > 1.0f && std::isfinite(options.emissiveStrength)) {
+                m.extensions["KHR_materials_emissive_strength"] = tinygltf::Value(
+                    tinygltf::Value::Object{{"emissiveStrength", tinygltf::Value(double(options.emissiveStrength))}});
+                use("KHR_materials_emissive_strength");
+            }
+        }
+        if (const int index = layoutMap(options.transmission); index >= 0) {
+            tinygltf::Value::Object textureInfo{{"index", tinygltf::Value(index)}};
+            m.extensions["KHR_materials_transmission"] = tinygltf::Value(tinygltf::Value::Object{
+                {"transmissionFactor", tinygltf::Value(1.0)}, {"transmissionTexture", tinygltf::Value(textureInfo)}});
+            use("KHR_materials_transmission");
+            if (options.ior > 0.0f && std::isfinite(options.ior)) {
+                m.extensions["KHR_materials_ior"] =
+                    tinygltf::Value(tinygltf::Value::Object{{"ior", tinygltf::Value(double(options.ior))}});
+                use("KHR_materials_ior");
+            }
         }
         model.materials.push_back(m);
         material = 0;

@@ -26,6 +26,12 @@
 //    sampler, named from the material's extras as
 //    "extras": {"voxelfair_house_colour_mask": {"index": TEXTURE}} (glTF's place for
 //    application-specific data; TEXTURE indexes "textures", sampled with TEXCOORD_0).
+//  - Material maps (GlbOptions::metallicRoughness, emissive, transmission), each with the base
+//    colour's sampler: pbrMetallicRoughness.metallicRoughnessTexture (factors 1);
+//    emissiveTexture with emissiveFactor [1, 1, 1] and, when the strength exceeds 1,
+//    KHR_materials_emissive_strength; KHR_materials_transmission (factor 1, the map as
+//    transmissionTexture) with KHR_materials_ior. Extensions used are listed in extensionsUsed
+//    (none is required: a viewer without them still shows the base colour).
 //
 // The options struct is the place for later additions (normal maps, tangents, more textures):
 // each new field gets a default that leaves today's output unchanged.
@@ -65,6 +71,14 @@ struct GlbOptions {
     // A VXL model's house colour mask (maps/house_mask.h) in the base colour's layout: white where
     // an engine tints by the player's colour. Empty: none.
     GlbTexture houseMask;
+    // MagicaVoxel materials as PBR maps in the base colour's layout (maps/material_maps.h); each
+    // empty one is left out. With a metallic-roughness map, metallic and roughness above are
+    // replaced by factors of 1 (the map holds the values).
+    GlbTexture metallicRoughness;   // G roughness, B metallic
+    GlbTexture emissive;            // sRGB emitted colour
+    float emissiveStrength = 1.0f;  // > 1: KHR_materials_emissive_strength
+    GlbTexture transmission;        // R: KHR_materials_transmission's texture
+    float ior = 0.0f;               // > 0 with a transmission map: KHR_materials_ior
 };
 
 // A triangle mesh in model space; the corner arrays hold 3 entries per triangle.

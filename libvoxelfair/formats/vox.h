@@ -10,6 +10,7 @@
 #pragma once
 
 #include "formats/palette.h"
+#include "formats/vox_materials.h"
 #include "volume/voxel_volume.h"
 
 #include <array>
@@ -80,6 +81,8 @@ struct VoxFile {
     Palette palette;
     std::array<uint8_t, 256> alpha{};
     bool defaultPalette = false;  // no RGBA chunk: the spec's default palette is used
+    // MATL chunks by colour index (formats/vox_materials.h); all _diffuse when the file has none.
+    VoxMaterialTable materials;
 
     // The scene graph in file order (empty when the file has none); `root` indexes node id 0.
     std::vector<VoxNode> nodes;
@@ -95,8 +98,8 @@ struct VoxFile {
 
 // Parses a whole .vox file. A model is a SIZE followed by an XYZI, or by Teardown's zlib-compressed
 // TDCZ (formats/vox_tdcz.h). Unknown chunks (and the children of known ones) are skipped by their
-// sizes; MATL, MATT, rOBJ, rCAM, NOTE and IMAP are skipped too (IMAP only reorders the editor's
-// palette view, not the colours). Throws FormatError saying what is wrong and where ("chunk
+// sizes; MATL chunks fill VoxFile::materials (vox_materials.h); MATT (deprecated), rOBJ, rCAM, NOTE
+// and IMAP are skipped too (IMAP only reorders the editor's palette view, not the colours). Throws FormatError saying what is wrong and where ("chunk
 // 'nTRN' at byte 1234: ..."): bad magic or version, truncation, a chunk past its parent, a SIZE
 // without voxels, voxels outside their model, corrupt or short compressed voxels, bad rotations or
 // translations, missing or cyclic node references, and the limits above. Never reads out of

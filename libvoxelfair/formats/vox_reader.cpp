@@ -84,9 +84,17 @@ private:
             return readShape(chunk, in);
         if (id == "LAYR")
             return readLayer(in);
+        if (id == "MATL")
+            return readMaterial(in);
         if (id == "PACK")
             file_.packed = true;  // its model count is implied by the SIZE/XYZI pairs
-        // Anything else (MATL, MATT, rOBJ, rCAM, NOTE, IMAP, unknown ids) is skipped by its size.
+        // Anything else (MATT, rOBJ, rCAM, NOTE, IMAP, unknown ids) is skipped by its size.
+    }
+
+    void readMaterial(ContentReader &in) {
+        const int32_t id = in.i32("material id");
+        const Dict properties = in.dict("material properties");
+        applyVoxMaterial(id, properties, file_.materials);
     }
 
     void readSize(const Chunk &chunk, ContentReader &in) {

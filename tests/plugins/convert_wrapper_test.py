@@ -23,6 +23,33 @@ def wrapper(cwd, *arguments):
     return result.returncode, result.stdout + result.stderr
 
 
+def glb_json(path):
+    import json, struct
+    data = path.read_bytes()
+    return json.loads(data[20:20 + struct.unpack("<I", data[12:16])[0]])
+
+
+def vox_with_materials(path):
+    """A 6 x 6 x 6 MagicaVoxel cube in layers of colour indices 1..6 whose MATL chunks make them
+    diffuse, metal, glass, emit (power 2), blend and an unreadable metal."""
+    import struct
+    def chunk(name, content):
+        return name.encode() + struct.pack("<ii", len(content), 0) + content
+    def string(text):
+        return struct.pack("<i", len(text)) + text.encode()
+    def matl(index, props):
+        return chunk("MATL", struct.pack("<ii", index, len(props)) + b"".join(string(k) + string(v) for k, v in props))
+    voxels = [(x, y, z, 1 + z) for x in range(6) for y in range(6) for z in range(6)]
+    body = chunk("SIZE", struct.pack("<iii", 6, 6, 6))
+    body += chunk("XYZI", struct.pack("<i", len(voxels)) + b"".join(struct.pack("<4B", *v) for v in voxels))
+    body += matl(2, [("_type", "_metal"), ("_metal", "0.8"), ("_rough", "0.3")])
+    body += matl(3, [("_type", "_glass"), ("_alpha", "0.6"), ("_ior", "0.45"), ("_rough", "0.1")])
+    body += matl(4, [("_type", "_emit"), ("_emit", "0.75"), ("_flux", "2")])
+    body += matl(5, [("_type", "_blend"), ("_metal", "0.5"), ("_trans", "0.2"), ("_emit", "0.1")])
+    body += matl(6, [("_type", "_metal"), ("_metal", "shiny")])
+    path.write_bytes(b"VOX " + struct.pack("<i", 150) + b"MAIN" + struct.pack("<ii", 0, len(body)) + body)
+
+
 def ply_header(path):
     data = path.read_bytes()
     return data[:data.index(b"end_header")].decode("ascii", "replace")
@@ -189,6 +216,40 @@ class ConvertWrapper(unittest.TestCase):
         raw = (self.work / "compared" / "tank_raw.ply").read_bytes()
         for label in ("taubin", "hc_laplacian"):
             self.assertNotEqual((self.work / "compared" / f"tank_{label}.ply").read_bytes(), raw, label)
+
+    def test_vox_materials_become_valid_gltf_pbr(self):
+        vox_with_materials(self.inputs / "cube.vox")
+        models = [self.inputs / "cube.vox"]
+        shared = Path(__file__).resolve().parents[3] / "shared" / "models" / "vox" / "robo.vox"
+        if shared.is_file():
+            shutil.copy(shared, self.inputs / "robo.vox")
+            models.append(self.inputs / "robo.vox")
+        code, output = wrapper(self.work, *map(str, models), "-o", "out", "--formats", "glb")
+        self.assertEqual(code, 0, output)
+        out = self.work / "out"
+        for name in ("metallic_roughness", "emissive", "transmission"):
+            self.assertTrue((out / f"cube_{name}.png").is_file(), f"{name}\n{output}")
+        self.assertIn("1 unreadable MATL values", output)
+        validator = subprocess.run(["node", str(HERE.parent.parent / "tools" / "gltf_validate.js"),
+                                    *(str(out / (m.stem + ".glb")) for m in models)], capture_output=True, text=True)
+        self.assertEqual(validator.returncode, 0, validator.stdout + validator.stderr)
+        self.assertEqual(validator.stdout.count("0 errors, 0 warnings"), len(models), validator.stdout)
+        cube = glb_json(out / "cube.glb")
+        material = cube["materials"][0]
+        self.assertIn("metallicRoughnessTexture", material["pbrMetallicRoughness"])
+        self.assertIn("emissiveTexture", material)
+        self.assertAlmostEqual(material["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"], 3.0, 5)
+        self.assertIn("transmissionTexture", material["extensions"]["KHR_materials_transmission"])
+        self.assertAlmostEqual(material["extensions"]["KHR_materials_ior"]["ior"], 1.45, 5)
+        self.assertEqual(sorted(cube["extensionsUsed"]), ["KHR_materials_emissive_strength", "KHR_materials_ior",
+                                                           "KHR_materials_transmission"])
+        self.assertNotIn("extras", material)  # no house colours outside VXL
+        if len(models) > 1:  # robo.vox's emitter: an emissive material, no other map
+            robo = glb_json(out / "robo.glb")["materials"][0]
+            self.assertIn("emissiveTexture", robo)
+            self.assertEqual(robo["emissiveFactor"], [1.0, 1.0, 1.0])
+            self.assertNotIn("metallicRoughnessTexture", robo["pbrMetallicRoughness"])
+            self.assertFalse((out / "robo_transmission.png").exists())
 
     def test_a_broken_model_is_named_with_the_importers_reason_and_the_others_still_convert(self):
         (self.inputs / "broken.vxl").write_bytes(b"Voxel Animation\0" + b"\xff" * 40)

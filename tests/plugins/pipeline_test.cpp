@@ -37,7 +37,10 @@ std::string pipelineScript(const std::string &dir, const std::string &texture, d
                                                           {"@TEXTURE_FILE@", texture},
                                                           {"@DECIMATION@", std::to_string(decimation)},
                                                           {"@NORMAL_FILE@", dir + "/normal.png"},
-                                                          {"@HOUSE_FILE@", dir + "/house.png"}};
+                                                          {"@HOUSE_FILE@", dir + "/house.png"},
+                                                          {"@METAL_ROUGH_FILE@", dir + "/metallic_roughness.png"},
+                                                          {"@EMISSIVE_FILE@", dir + "/emissive.png"},
+                                                          {"@TRANSMISSION_FILE@", dir + "/transmission.png"}};
     for (const auto &[key, value] : values)
         for (size_t at; (at = text.find(key)) != std::string::npos;)
             text.replace(at, key.size(), value);
@@ -47,10 +50,9 @@ std::string pipelineScript(const std::string &dir, const std::string &texture, d
              {" <filter name=\"Simplification:[^]*?</filter>\n", " <filter name=\"Duplicate Current layer\"/>\n",
               " <filter name=\"Voxel Texture: Bake Normal Map\">[^]*?</filter>\n"})
             text = std::regex_replace(text, std::regex(filter), "");
-    // House colours are a VXL palette's (as the wrapper does).
-    if (!vxl)
-        text = std::regex_replace(
-            text, std::regex(" <filter name=\"Voxel Texture: Bake House Colour Mask\">[^]*?</filter>\n"), "");
+    // House colours are a VXL palette's, materials a VOX file's (as the wrapper does).
+    const std::string unfit = vxl ? "Bake Material Maps" : "Bake House Colour Mask";
+    text = std::regex_replace(text, std::regex(" <filter name=\"Voxel Texture: " + unfit + "\">[^]*?</filter>\n"), "");
     const std::string path = dir + "/pipeline.mlx";
     std::ofstream(path) << text;
     return path;
