@@ -184,6 +184,14 @@ class ConvertWrapper(unittest.TestCase):
                 material = gltf["materials"][0]
                 self.assertIn("normalTexture", material, path.name)
                 base_colours.append(image(gltf, binary, material["pbrMetallicRoughness"]["baseColorTexture"]["index"]))
+                # The maps in the atlas' layout reach every level: the unit's house colour mask,
+                # robo's emitter.
+                if name == "3tnk":
+                    mask = material["extras"]["voxelfair_house_colour_mask"]["index"]
+                    self.assertEqual(image(gltf, binary, mask), (self.work / "lods" / "3tnk_house.png").read_bytes())
+                else:
+                    self.assertEqual(image(gltf, binary, material["emissiveTexture"]["index"]),
+                                     (self.work / "lods" / "robo_emissive.png").read_bytes())
             # Level 0 is the faired mesh itself (share 1); each level within 20% of its share of it.
             for level, share in enumerate(shares):
                 self.assertLessEqual(abs(faces[level] / faces[0] - share), 0.2 * share, f"{name}: {faces}")
