@@ -93,7 +93,7 @@ private:
 
     void readMaterial(ContentReader &in) {
         const int32_t id = in.i32("material id");
-        const Dict properties = in.dict("material properties");
+        const Dict properties = in.dict("material property count");
         applyVoxMaterial(id, properties, file_.materials);
     }
 

@@ -172,6 +172,55 @@ TEST(GlbWriter, MaterialSamplerAndTextureFollowTheOptions) {
     }
 }
 
+// The maps in the base colour's layout: the house colour mask named by the material's extras, the
+// PBR maps with their extensions (listed in extensionsUsed), all on the base colour's sampler.
+TEST(GlbWriter, HouseMaskAndMaterialMapsAreReferencedFromTheMaterial) {
+    std::mt19937 rng(7);
+    const Generated g = generate(rng, 0);
+    GlbTexture texture{{0x89, 'P', 'N', 'G', 1}, "atlas"};
+    GlbOptions options;
+    options.houseMask = {{0x89, 'P', 'N', 'G', 2}, "house"};
+    options.metallicRoughness = {{0x89, 'P', 'N', 'G', 3}, "metal"};
+    options.emissive = {{0x89, 'P', 'N', 'G', 4}, "emissive"};
+    options.emissiveStrength = 2.5f;
+    options.transmission = {{0x89, 'P', 'N', 'G', 5}, "transmission"};
+    options.ior = 1.3f;
+    const tinygltf::Model model = load(writeGlb(g.mesh, g.scene, &texture, options));
+    ASSERT_EQ(model.materials.size(), 1u);
+    const tinygltf::Material &m = model.materials[0];
+    const auto bytesOf = [&](int textureIndex) {
+        const tinygltf::Texture &t = model.textures[size_t(textureIndex)];
+        EXPECT_EQ(t.sampler, 0);
+        const tinygltf::BufferView &view = model.bufferViews[size_t(model.images[size_t(t.source)].bufferView)];
+        return std::vector<uint8_t>(model.buffers[0].data.begin() + long(view.byteOffset),
+                                    model.buffers[0].data.begin() + long(view.byteOffset + view.byteLength));
+    };
+    ASSERT_TRUE(m.extras.Has("voxelfair_house_colour_mask"));
+    EXPECT_EQ(bytesOf(m.extras.Get("voxelfair_house_colour_mask").Get("index").GetNumberAsInt()),
+              options.houseMask.png);
+    EXPECT_EQ(bytesOf(m.pbrMetallicRoughness.metallicRoughnessTexture.index), options.metallicRoughness.png);
+    EXPECT_EQ(m.pbrMetallicRoughness.metallicFactor, 1.0);
+    EXPECT_EQ(m.pbrMetallicRoughness.roughnessFactor, 1.0);
+    EXPECT_EQ(bytesOf(m.emissiveTexture.index), options.emissive.png);
+    EXPECT_EQ(m.emissiveFactor, (std::vector<double>{1.0, 1.0, 1.0}));
+    EXPECT_NEAR(m.extensions.at("KHR_materials_emissive_strength").Get("emissiveStrength").GetNumberAsDouble(), 2.5,
+                1e-6);
+    const tinygltf::Value &transmission = m.extensions.at("KHR_materials_transmission");
+    EXPECT_EQ(bytesOf(transmission.Get("transmissionTexture").Get("index").GetNumberAsInt()), options.transmission.png);
+    EXPECT_NEAR(m.extensions.at("KHR_materials_ior").Get("ior").GetNumberAsDouble(), 1.3, 1e-6);
+    EXPECT_EQ(model.extensionsUsed.size(), 3u);
+    EXPECT_TRUE(model.extensionsRequired.empty());
+    // Strength 1 needs no extension; without a base colour texture no map is written.
+    options.emissiveStrength = 1.0f;
+    options.transmission = {};
+    const tinygltf::Model plain = load(writeGlb(g.mesh, g.scene, &texture, options));
+    EXPECT_EQ(plain.materials[0].extensions.count("KHR_materials_emissive_strength"), 0u);
+    EXPECT_TRUE(plain.extensionsUsed.empty());
+    const tinygltf::Model bare = load(writeGlb(g.mesh, g.scene, nullptr, options));
+    EXPECT_TRUE(bare.textures.empty());
+    EXPECT_EQ(bare.materials[0].emissiveTexture.index, -1);
+}
+
 TEST(GlbWriter, AnimationSamplesEveryFrame) {
     std::mt19937 rng(9);
     for (size_t frames : {2u, 7u}) {

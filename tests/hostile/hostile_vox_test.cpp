@@ -173,6 +173,8 @@ TEST(HostileVox, AbsurdCountsInEveryChunkKind) {
         {node("nSHP", VoxContent().i32(0).i32(0).i32(huge)), "model count 2147483647"},
         {node("nSHP", VoxContent().i32(0).i32(0).i32(1).i32(0).i32(huge)), "model attribute count"},
         {node("LAYR", VoxContent().i32(0).i32(huge)), "layer attribute count"},
+        {node("MATL", VoxContent().i32(1).i32(huge)), "material property count 2147483647"},
+        {node("MATL", VoxContent().i32(1).i32(1).i32(huge).i32(0)), "dictionary key 2147483647"},
         {node("RGBA", VoxContent().i32(1)), "RGBA palette (255 used entries)"},
         {VoxWriter().model(huge, 1, 1, {}).bytes(), "size 2147483647 x 1 x 1"},
         {VoxWriter().model(-1, -1, -1, {}).bytes(), "size -1 x -1 x -1"},

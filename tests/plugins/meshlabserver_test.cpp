@@ -192,6 +192,8 @@ TEST(MeshlabServer, ListsOurFilters) {
     std::ifstream in(dir + "/filters.html");
     const std::string html(std::istreambuf_iterator<char>(in), {});
     EXPECT_NE(html.find("Voxel"), std::string::npos) << run.output;
+    for (const char *name : {"Voxel Texture: Bake House Colour Mask", "Voxel Texture: Bake Material Maps"})
+        EXPECT_NE(html.find(name), std::string::npos) << name;
     fs::remove_all(dir);
 }
 
