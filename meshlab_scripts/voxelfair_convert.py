@@ -20,7 +20,7 @@ meshlabserver with voxelfair's plugins:
                   instead: NAME_lod0.glb, NAME_lod1.glb, ... from one atlas (NAME_texture.png,
                   shared: decimation with texture keeps the UVs), each decimated copy of the
                   faired layer with its own normal map NAME_lodN_normal.png baked from the full
-                  faired mesh, and the same house mask or material maps
+                  faired mesh, and the same house mask or material maps (not with --no-normal-map)
   --mode import   the voxel surface only: NAME.ply with face colours and each face's section
   --mode compare  the same input through voxelfair's fairing (paper and constrained modes), through
                   MeshLab's Taubin, HC Laplacian and TwoStep Smooth, and (when the build has
@@ -282,14 +282,12 @@ def convert_lods(model, args, run):
         single = argparse.Namespace(**dict(vars(args), decimate=0.5, no_normal_map=False))
         house, materials = layout_maps(model, out)
         text = lod_script(pipeline_script(single, texture, normals[0], house, materials), args.lods, normals)
-        if args.no_normal_map:
-            text = re.sub(r' <filter name="Voxel Texture: Bake Normal Map">.*?</filter>\n', "", text, flags=re.S)
         script.write_text(text)
         arguments = ["-i", str(model)]
         for level, glb in enumerate(glbs):
             arguments += ["-o", str(glb), "-l", str(level + 1), "-m", "wt", "vn"]
         code, output, _ = run(arguments + ["-s", str(script)])
-    maps = ([] if args.no_normal_map else normals) + ([house] if house else [])
+    maps = normals + ([house] if house else [])
     check([texture] + maps + glbs, code, output)
     maps += [m for m in materials or () if m.is_file()]
     details = [line.split(": ", 1)[1] for line in output.splitlines()
@@ -471,6 +469,11 @@ def main():
             sys.exit("voxelfair: --lods takes a comma-separated list of shares of the faces in (0, 1], e.g. 1,0.25,0.05")
         if args.mode != "full":
             sys.exit("voxelfair: --lods needs --mode full")
+        if args.no_normal_map:
+            # Each level is a decimated copy of the faired layer; its normal-map bake is also what
+            # gives the copy back its parts (one glTF node per part) and its maps in the atlas' layout.
+            sys.exit("voxelfair: --lods bakes a normal map for every level (the bake also gives each decimated "
+                     "copy back its parts and maps); drop --no-normal-map, or use --decimate for one mesh without it")
     if args.passes < 1 or args.texels_per_voxel <= 0:
         sys.exit("voxelfair: --passes must be at least 1 and --texels-per-voxel positive")
     if args.palette and not Path(args.palette).is_file():

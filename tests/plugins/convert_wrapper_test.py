@@ -201,6 +201,12 @@ class ConvertWrapper(unittest.TestCase):
                 self.assertEqual(colour, texture, f"{name} level {level}")
         self.assertFalse(any(p.name.endswith((".ply", ".obj")) for p in (self.work / "lods").iterdir()), output)
 
+    def test_levels_of_detail_without_normal_maps_are_refused_before_anything_is_written(self):
+        code, output = wrapper(self.work, "models/tank.vxl", "-o", "lods", "--lods", "1,0.25", "--no-normal-map")
+        self.assertNotEqual(code, 0, output)
+        self.assertIn("--lods bakes a normal map for every level", output)
+        self.assertFalse((self.work / "lods").exists(), output)
+
     def test_without_decimation_or_with_no_normal_map_no_normal_map_is_written(self):
         for options in (["--decimate", "1"], ["--no-normal-map"]):
             code, output = wrapper(self.work, "models/tank.vxl", "-o", "plain", "--formats", "obj", *options)
