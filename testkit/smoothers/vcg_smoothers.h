@@ -18,6 +18,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "smoothers/vcg_arrays.h"
+
 #include <vcg/complex/complex.h>
 #include <vcg/complex/algorithms/clean.h>
 #include <vcg/complex/algorithms/smooth.h>
@@ -38,23 +40,7 @@ class Face : public vcg::Face<UsedTypes, vcg::face::VertexRef, vcg::face::Normal
                               vcg::face::BitFlags> {};
 class Mesh : public vcg::tri::TriMesh<std::vector<Vertex>, std::vector<Face>> {};
 
-inline void build(Mesh &mesh, const std::vector<glm::vec3> &positions, const std::vector<uint32_t> &triangles) {
-    mesh.Clear();
-    auto vi = vcg::tri::Allocator<Mesh>::AddVertices(mesh, positions.size());
-    for (const glm::vec3 &p : positions)
-        (vi++)->P() = vcg::Point3f(p.x, p.y, p.z);
-    auto fi = vcg::tri::Allocator<Mesh>::AddFaces(mesh, triangles.size() / 3);
-    for (size_t t = 0; t + 2 < triangles.size(); t += 3, ++fi)
-        for (int k = 0; k < 3; ++k)
-            fi->V(k) = &mesh.vert[triangles[t + k]];
-}
-
-inline void readBack(const Mesh &mesh, std::vector<glm::vec3> &positions) {
-    for (size_t v = 0; v < positions.size(); ++v) {
-        const vcg::Point3f &p = mesh.vert[v].cP();
-        positions[v] = glm::vec3(p[0], p[1], p[2]);
-    }
-}
+using vcgarrays::build;  // positions and triangles into a Mesh (vcg_arrays.h)
 
 inline void hcLaplacian(std::vector<glm::vec3> &positions, const std::vector<uint32_t> &triangles) {
     Mesh m;
@@ -62,7 +48,7 @@ inline void hcLaplacian(std::vector<glm::vec3> &positions, const std::vector<uin
     vcg::tri::UpdateFlags<Mesh>::FaceBorderFromNone(m);
     const size_t selected = vcg::tri::UpdateSelection<Mesh>::VertexFromFaceStrict(m);
     vcg::tri::Smooth<Mesh>::VertexCoordLaplacianHC(m, 1, selected > 0);
-    readBack(m, positions);
+    vcgarrays::readPositions(m, positions);
 }
 
 struct TwoStepSettings {
@@ -86,7 +72,7 @@ inline void twoStep(std::vector<glm::vec3> &positions, const std::vector<uint32_
         vcg::tri::UpdateNormal<Mesh>::PerFaceNormalized(m);
         vcg::tri::Smooth<Mesh>::VertexCoordPasoDoble(m, s.stepNormalNum, sigma, s.stepFitNum, false);
     }
-    readBack(m, positions);
+    vcgarrays::readPositions(m, positions);
 }
 
 }  // namespace voxelfair::vcgsmooth

@@ -15,6 +15,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "smoothers/vcg_arrays.h"
+
 // vcglib needs complex.h before its algorithms.
 #include <vcg/complex/complex.h>
 #include <vcg/complex/algorithms/smooth.h>
@@ -31,16 +33,7 @@ class Vertex : public vcg::Vertex<UsedTypes, vcg::vertex::Coord3f, vcg::vertex::
 class Face : public vcg::Face<UsedTypes, vcg::face::VertexRef, vcg::face::BitFlags> {};
 class Mesh : public vcg::tri::TriMesh<std::vector<Vertex>, std::vector<Face>> {};
 
-inline void build(Mesh &mesh, const std::vector<glm::vec3> &positions, const std::vector<uint32_t> &triangles) {
-    mesh.Clear();
-    auto vi = vcg::tri::Allocator<Mesh>::AddVertices(mesh, positions.size());
-    for (const glm::vec3 &p : positions)
-        (vi++)->P() = vcg::Point3f(p.x, p.y, p.z);
-    auto fi = vcg::tri::Allocator<Mesh>::AddFaces(mesh, triangles.size() / 3);
-    for (size_t t = 0; t + 2 < triangles.size(); t += 3, ++fi)
-        for (int k = 0; k < 3; ++k)
-            fi->V(k) = &mesh.vert[triangles[t + k]];
-}
+using vcgarrays::build;  // positions and triangles into a Mesh (vcg_arrays.h)
 
 // The filter's body: border flags, selection test, then the lambda-mu steps.
 inline void taubinLikeMeshLab(Mesh &mesh, int steps = 10, float lambda = 0.5f, float mu = -0.53f) {
@@ -55,10 +48,7 @@ inline void taubinLikeMeshLab(std::vector<glm::vec3> &positions, const std::vect
     Mesh mesh;
     build(mesh, positions, triangles);
     taubinLikeMeshLab(mesh, steps, lambda, mu);
-    for (size_t v = 0; v < positions.size(); ++v) {
-        const vcg::Point3f &p = mesh.vert[v].cP();
-        positions[v] = glm::vec3(p[0], p[1], p[2]);
-    }
+    vcgarrays::readPositions(mesh, positions);
 }
 
 }  // namespace voxelfair::vcgtaubin
