@@ -43,8 +43,8 @@ const Prepared &prepared() {
 
 void BM_BakeNormalMap(benchmark::State &state) {
     const Prepared &p = prepared();
-    const NormalBakeMesh source = bakeView(p.hi.positions, p.hi.normals, p.hi.triangles, p.hi.wedgeUv);
-    const NormalBakeMesh target = bakeView(p.lo.positions, p.lo.normals, p.lo.triangles, p.lo.wedgeUv);
+    const NormalBakeMesh source = normalBakeMesh(p.hi.positions, p.hi.normals, p.hi.triangles, p.hi.wedgeUv);
+    const NormalBakeMesh target = normalBakeMesh(p.lo.positions, p.lo.normals, p.lo.triangles, p.lo.wedgeUv);
     NormalBakeOptions options;
     options.width = p.hi.textureWidth;
     options.height = p.hi.textureHeight;
@@ -66,8 +66,8 @@ BENCHMARK(BM_BakeNormalMap)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->Meas
 
 void BM_MikkTSpace(benchmark::State &state, bool decimated) {
     const Prepared &p = prepared();
-    const NormalBakeMesh mesh = decimated ? bakeView(p.lo.positions, p.lo.normals, p.lo.triangles, p.lo.wedgeUv)
-                                          : bakeView(p.hi.positions, p.hi.normals, p.hi.triangles, p.hi.wedgeUv);
+    const NormalBakeMesh mesh = decimated ? normalBakeMesh(p.lo.positions, p.lo.normals, p.lo.triangles, p.lo.wedgeUv)
+                                          : normalBakeMesh(p.hi.positions, p.hi.normals, p.hi.triangles, p.hi.wedgeUv);
     for (auto _ : state)
         benchmark::DoNotOptimize(targetTangents(mesh).data());
     state.counters["faces"] = double(mesh.faceCount);

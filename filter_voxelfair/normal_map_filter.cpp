@@ -24,16 +24,7 @@ struct BakeArrays {
     std::vector<glm::vec3> positions, normals;
     std::vector<uint32_t> triangles;
     std::vector<glm::vec2> wedgeUv;
-    NormalBakeMesh view() const {
-        NormalBakeMesh m;
-        m.positions = positions.data();
-        m.normals = normals.data();
-        m.vertexCount = positions.size();
-        m.triangles = triangles.data();
-        m.wedgeUv = wedgeUv.data();
-        m.faceCount = triangles.size() / 3;
-        return m;
-    }
+    NormalBakeMesh view() const { return normalBakeMesh(positions, normals, triangles, wedgeUv); }
 };
 
 void readBakeArrays(const CMeshO &cm, BakeArrays &out) {

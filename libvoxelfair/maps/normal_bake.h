@@ -24,6 +24,8 @@
 // each band walks from its own starting points, so the map is the same for any thread count.
 #pragma once
 
+#include "mesh/triangle_mesh.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -35,15 +37,21 @@
 
 namespace voxelfair {
 
-// A triangle mesh with per-vertex normals and per-corner UVs in [0, 1]^2, v up.
-struct NormalBakeMesh {
-    const glm::vec3 *positions = nullptr;
+// A triangle mesh (mesh/triangle_mesh.h) with per-vertex normals and per-corner UVs in [0, 1]^2, v up.
+struct NormalBakeMesh : TriangleMesh {
     const glm::vec3 *normals = nullptr;  // per vertex, any non-zero length
-    size_t vertexCount = 0;
-    const uint32_t *triangles = nullptr;  // 3 per face
-    const glm::vec2 *wedgeUv = nullptr;   // 3 per face
-    size_t faceCount = 0;
+    const glm::vec2 *wedgeUv = nullptr;  // 3 per face
 };
+
+// The view on vectors: one normal per position, 3 indices and 3 UVs per face.
+inline NormalBakeMesh normalBakeMesh(const std::vector<glm::vec3> &positions, const std::vector<glm::vec3> &normals,
+                                     const std::vector<uint32_t> &triangles, const std::vector<glm::vec2> &wedgeUv) {
+    NormalBakeMesh m;
+    static_cast<TriangleMesh &>(m) = triangleMesh(positions, triangles);
+    m.normals = normals.data();
+    m.wedgeUv = wedgeUv.data();
+    return m;
+}
 
 struct NormalBakeOptions {
     // The atlas' texture in texels (the base colour's: UVs are normalised per axis, so a 2:1

@@ -73,16 +73,7 @@ glm::mat2 randomUvMap(std::mt19937 &rng, bool mirror) {
     return rot * glm::mat2(sx, 0.0f, 0.0f, mirror ? -sy : sy);
 }
 
-NormalBakeMesh view(const PlaneGrid &g) {
-    NormalBakeMesh m;
-    m.positions = g.positions.data();
-    m.normals = g.normals.data();
-    m.vertexCount = g.positions.size();
-    m.triangles = g.triangles.data();
-    m.wedgeUv = g.wedgeUv.data();
-    m.faceCount = g.triangles.size() / 3;
-    return m;
-}
+NormalBakeMesh view(const PlaneGrid &g) { return normalBakeMesh(g.positions, g.normals, g.triangles, g.wedgeUv); }
 
 }  // namespace
 

@@ -42,8 +42,8 @@ TEST(NormalMapGoal, DecimatedToTenPercentEveryModelShadesWithinAThirdOfItsVertex
         }
         const FairedMesh hi = fairedMesh(*model, 8.0f);
         const vcgdecimate::TexturedMesh lo = vcgdecimate::decimate(hi.positions, hi.triangles, hi.wedgeUv, 0.1);
-        const NormalBakeMesh source = bakeView(hi.positions, hi.normals, hi.triangles, hi.wedgeUv);
-        const NormalBakeMesh target = bakeView(lo.positions, lo.normals, lo.triangles, lo.wedgeUv);
+        const NormalBakeMesh source = normalBakeMesh(hi.positions, hi.normals, hi.triangles, hi.wedgeUv);
+        const NormalBakeMesh target = normalBakeMesh(lo.positions, lo.normals, lo.triangles, lo.wedgeUv);
         NormalBakeOptions options;
         options.width = hi.textureWidth;
         options.height = hi.textureHeight;
