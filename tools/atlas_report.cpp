@@ -14,7 +14,7 @@
 #include "atlas/atlas_measures.h"
 #include "atlas/texture_atlas.h"
 #include "base/error.h"
-#include "pipeline/pipeline_stages.h"
+#include "pipeline/atlas_runs.h"
 #include "extraction/boundary_surface.h"
 #include "formats/file_bytes.h"
 #include "formats/format_error.h"
@@ -26,6 +26,7 @@
 #include <chrono>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -152,17 +153,10 @@ bool loadVxl(const std::string &name, TestMesh &mesh) {
 // Every shared model (vxl/ and vox/), through the chain as the plugins run it (extraction,
 // the paper's fairing, attributes, atlas) at the atlas filter's defaults: one row per model.
 void reportShared(const char *ppmDir) {
-    namespace fs = std::filesystem;
     const std::string dir = VOXELFAIR_MODELS_DIR;
-    std::vector<fs::path> files;
-    for (const char *sub : {"vxl", "vox"})
-        if (fs::is_directory(dir + "/" + sub))
-            for (const fs::directory_entry &e : fs::directory_iterator(dir + "/" + sub))
-                if ((e.path().extension() == ".vxl" || e.path().extension() == ".vox") &&
-                    (!only || e.path().stem() == only))
-                    files.push_back(e.path());
-    std::sort(files.begin(), files.end());
-    if (files.empty()) {
+    std::vector<std::string> refused;
+    const auto models = pipeline::sharedModels(dir, &refused, only ? only : "");
+    if (models.empty() && refused.empty()) {
         std::printf("\n--shared: no models in %s\n", dir.c_str());
         return;
     }
@@ -175,52 +169,37 @@ void reportShared(const char *ppmDir) {
                 double(options.pack.texelsPerUnit), options.pack.maxTextureSize);
     std::printf("  %-14s %7s %6s %11s %8s %7s %6s %8s %7s %7s %6s %5s %8s\n", "model", "faces", "charts", "texture",
                 "texel/v", "cover%", "ctr%", "ch/kface", "near%", "bilin%", "sep", "over", "atlas ms");
+    for (const std::string &r : refused)
+        std::printf("  skipped: %s\n", r.c_str());
     std::vector<double> covers;
-    for (const fs::path &file : files) {
-        std::unique_ptr<pipeline::Model> model;
+    for (const auto &model : models) {
+        std::optional<pipeline::AtlasRun> run;
         try {
-            model = file.extension() == ".vox" ? pipeline::loadVox(file.string())
-                                               : pipeline::loadVxl(file.string(), dir + "/pal");
-        } catch (const std::exception &e) {
-            std::printf("  %-14s skipped: %s\n", file.filename().c_str(), e.what());
-            continue;
-        }
-        pipeline::QuadMesh mesh = pipeline::extract(model->scene);
-        if (mesh.quadCount() == 0) {
-            std::printf("  %-14s skipped: no surface\n", file.filename().c_str());
-            continue;
-        }
-        pipeline::fair(mesh);
-        const pipeline::Attributes a = pipeline::smoothAttributes(mesh);
-        const AtlasMesh view = pipeline::atlasMesh(mesh, a);
-        const auto t0 = std::chrono::steady_clock::now();
-        TextureAtlas atlas;
-        try {
-            atlas = pipeline::buildAtlas(mesh, a, options);
+            run = pipeline::runAtlas(*model, options);
         } catch (const Error &e) {
-            std::printf("  %-14s failed: %s\n", file.filename().c_str(), e.what());
+            std::printf("  %-14s failed: %s\n", model->name.c_str(), e.what());
             continue;
         }
-        const double ms = msSince(t0);
-        const AtlasMeasures m = measureAtlas(view, atlas.charts, atlas.layout);
-        const ColourFidelity fid = measureColourFidelity(view, atlas.layout, atlas.texture);
+        if (!run) {
+            std::printf("  %-14s skipped: no surface\n", model->name.c_str());
+            continue;
+        }
+        const TextureAtlas &atlas = run->atlas;
+        const AtlasMeasures &m = run->measures;
+        const ColourFidelity &fid = run->fidelity;
         covers.push_back(m.packingEfficiency);
         const std::string texture = std::to_string(atlas.layout.width) + "x" + std::to_string(atlas.layout.height);
-        std::printf("  %-14s %7zu %6zu %11s %8.3f %7.2f %6.2f %8.2f %7.3f %7.3f %6zu %5zu %8.1f\n",
-                    file.filename().c_str(), view.faceCount, atlas.charts.chartCount(), texture.c_str(),
-                    atlas.layout.texelsPerUnit * mesh.voxelSize, 100 * m.packingEfficiency, 100 * m.centreEfficiency,
-                    1000.0 * double(atlas.charts.chartCount()) / double(view.faceCount), 100 * fid.nearest(),
-                    100 * fid.bilinear(), atlas.charts.separatedFaces, m.overlappingChartTexels + m.overlappingCentres,
-                    ms);
+        std::printf("  %-14s %7zu %6zu %11s %8.3f %7.2f %6.2f %8.2f %7.3f %7.3f %6zu %5zu %8.1f\n", model->name.c_str(),
+                    run->faceCount(), atlas.charts.chartCount(), texture.c_str(),
+                    atlas.layout.texelsPerUnit * run->mesh.voxelSize, 100 * m.packingEfficiency,
+                    100 * m.centreEfficiency, run->chartsPerKiloFace(), 100 * fid.nearest(), 100 * fid.bilinear(),
+                    atlas.charts.separatedFaces, m.overlappingChartTexels + m.overlappingCentres, run->atlasMs);
         if (ppmDir)
-            writePpm(std::string(ppmDir) + "/" + file.stem().string() + "_shared.ppm", atlas.texture);
+            writePpm(std::string(ppmDir) + "/" + model->name + "_shared.ppm", atlas.texture);
     }
-    std::sort(covers.begin(), covers.end());
     if (!covers.empty())
         std::printf("  coverage over %zu models: median %.2f%%, lowest %.2f%%\n", covers.size(),
-                    100 * (covers.size() % 2 ? covers[covers.size() / 2]
-                                             : 0.5 * (covers[covers.size() / 2 - 1] + covers[covers.size() / 2])),
-                    100 * covers.front());
+                    100 * pipeline::median(covers), 100 * *std::min_element(covers.begin(), covers.end()));
 }
 
 }  // namespace

@@ -55,40 +55,7 @@ inline FairedMesh fairedMesh(const pipeline::Model &model, float texelsPerVoxel)
     return out;
 }
 
-// Every shared model the readers accept (.vxl with its .hva and the game palettes, .vox);
-// `refused` collects "file: reason" for the others.
-inline std::vector<std::unique_ptr<pipeline::Model>> sharedModels(const std::filesystem::path &dir,
-                                                                  std::vector<std::string> *refused) {
-    std::vector<std::filesystem::path> files;
-    for (const char *sub : {"vxl", "vox"})
-        if (std::filesystem::is_directory(dir / sub))
-            for (const auto &entry : std::filesystem::directory_iterator(dir / sub))
-                if (entry.path().extension() == std::string(".") + sub)
-                    files.push_back(entry.path());
-    std::sort(files.begin(), files.end());
-    std::vector<std::unique_ptr<pipeline::Model>> models;
-    for (const auto &file : files) {
-        try {
-            models.push_back(file.extension() == ".vxl" ? pipeline::loadVxl(file.string(), (dir / "pal").string())
-                                                        : pipeline::loadVox(file.string()));
-        } catch (const std::exception &e) {
-            if (refused)
-                refused->push_back(file.filename().string() + ": " + e.what());
-        }
-    }
-    return models;
-}
-
-inline NormalBakeMesh bakeView(const std::vector<glm::vec3> &positions, const std::vector<glm::vec3> &normals,
-                               const std::vector<uint32_t> &triangles, const std::vector<glm::vec2> &wedgeUv) {
-    NormalBakeMesh m;
-    m.positions = positions.data();
-    m.normals = normals.data();
-    m.vertexCount = positions.size();
-    m.triangles = triangles.data();
-    m.wedgeUv = wedgeUv.data();
-    m.faceCount = triangles.size() / 3;
-    return m;
-}
+// The shared models (pipeline::sharedModels) for the maps' tests and benchmark.
+using pipeline::sharedModels;
 
 }  // namespace voxelfair::mapstest

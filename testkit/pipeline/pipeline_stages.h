@@ -162,6 +162,31 @@ inline std::unique_ptr<Model> loadVox(const std::string &path) {
     return model;
 }
 
+// Every shared model the readers accept, sorted by file (vxl/NAME.vxl with its .hva and the game
+// palettes in pal/, vox/NAME.vox), or only the one named `only` (its file name without extension);
+// `refused` collects "file: reason" for the others.
+inline std::vector<std::unique_ptr<Model>>
+sharedModels(const std::filesystem::path &dir, std::vector<std::string> *refused, const std::string &only = "") {
+    std::vector<std::filesystem::path> files;
+    for (const char *sub : {"vxl", "vox"})
+        if (std::filesystem::is_directory(dir / sub))
+            for (const auto &entry : std::filesystem::directory_iterator(dir / sub))
+                if (entry.path().extension() == std::string(".") + sub && (only.empty() || entry.path().stem() == only))
+                    files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    std::vector<std::unique_ptr<Model>> models;
+    for (const auto &file : files) {
+        try {
+            models.push_back(file.extension() == ".vxl" ? loadVxl(file.string(), (dir / "pal").string())
+                                                        : loadVox(file.string()));
+        } catch (const std::exception &e) {
+            if (refused)
+                refused->push_back(file.filename().string() + ": " + e.what());
+        }
+    }
+    return models;
+}
+
 // Volumes meshed in their own voxel units, shown placed by `toDisplay` (one matrix per volume),
 // with `palette`: e.g. a voxelized analytic shape, or a synthetic multi-section model.
 inline std::unique_ptr<Model> volumesModel(std::string name, std::vector<VoxelVolume> volumes,
