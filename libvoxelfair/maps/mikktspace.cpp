@@ -209,6 +209,12 @@ struct Builder {
         }
         if (bool(tri.flags & OrientPreserving) != groups[size_t(g)].orientPreserving)
             return;
+        join(f, i, g);
+    }
+
+    // Corner i of face f joins group g, which then spreads across the two edges at that corner.
+    void join(int f, int i, int g) {
+        Triangle &tri = tris[size_t(f)];
         groupFaces.push_back(f);
         ++groups[size_t(g)].count;
         tri.group[i] = g;
@@ -226,15 +232,8 @@ struct Builder {
                 Triangle &tri = tris[f];
                 if ((tri.flags & GroupWithAny) || tri.group[i] != -1)
                     continue;
-                const int g = int(groups.size());
-                groups.push_back({tri.corner[i], bool(tri.flags & OrientPreserving), groupFaces.size(), 1});
-                groupFaces.push_back(int(f));
-                tri.group[i] = g;
-                const int left = tri.neighbour[i], right = tri.neighbour[i > 0 ? i - 1 : 2];
-                if (left >= 0)
-                    assign(left, g);
-                if (right >= 0)
-                    assign(right, g);
+                groups.push_back({tri.corner[i], bool(tri.flags & OrientPreserving), groupFaces.size(), 0});
+                join(int(f), i, int(groups.size()) - 1);
             }
     }
 
