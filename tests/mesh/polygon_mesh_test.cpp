@@ -1,4 +1,5 @@
 #include "mesh/polygon_mesh.h"
+#include "mesh/triangle_mesh.h"
 #include "base/error.h"
 #include "mesh/vector_helpers.h"
 
@@ -12,8 +13,10 @@ using namespace voxelfair;
 
 namespace {
 
-// The message of the MeshError validate() throws, or "" when it accepts the mesh.
-std::string rejection(const PolygonMesh &mesh) {
+// The message of the MeshError validate() throws, or "" when it accepts the mesh (a PolygonMesh
+// or a TriangleMesh).
+template <class Mesh>
+std::string rejection(const Mesh &mesh) {
     try {
         validate(mesh);
     } catch (const MeshError &e) {
@@ -71,4 +74,30 @@ TEST(MeshVectorHelpers, NormalizedOrZero) {
     EXPECT_EQ(normalizedOrZero(glm::vec3(3e38f, 3e38f, 0.0f)), glm::vec3(0.0f));  // squared length overflows
     EXPECT_TRUE(isFinite(glm::vec3(1.0f)));
     EXPECT_FALSE(isFinite(glm::vec3(1.0f, nan, 0.0f)));
+}
+
+TEST(TriangleMeshValidation, AcceptsTrianglesAndTheEmptyMesh) {
+    const std::vector<glm::vec3> p(4);
+    const std::vector<uint32_t> triangles = {0, 1, 2, 0, 2, 3};
+    const TriangleMesh view = triangleMesh(p, triangles);
+    EXPECT_EQ(view.faceCount, 2u);
+    EXPECT_EQ(view.vertexCount, 4u);
+    EXPECT_EQ(rejection(view), "");
+    EXPECT_EQ(rejection(TriangleMesh{}), "");
+    // Vertices without faces are no error either (nothing reads them).
+    EXPECT_EQ(rejection(TriangleMesh{nullptr, 3, nullptr, 0}), "");
+}
+
+TEST(TriangleMeshValidation, NamesTheFaceAndTheProblem) {
+    const std::vector<glm::vec3> p(4);
+    std::vector<uint32_t> triangles = {0, 1, 2, 0, 2, 3};
+    triangles[4] = 7;
+    const std::string outOfRange = rejection(triangleMesh(p, triangles));
+    EXPECT_NE(outOfRange.find("face 1"), std::string::npos) << outOfRange;
+    EXPECT_NE(outOfRange.find("vertex 7"), std::string::npos) << outOfRange;
+
+    EXPECT_NE(rejection(TriangleMesh{p.data(), p.size(), nullptr, 2}).find("no triangle indices"), std::string::npos);
+    EXPECT_NE(rejection(TriangleMesh{nullptr, p.size(), triangles.data(), 2}).find("no vertex positions"),
+              std::string::npos);
+    EXPECT_NE(rejection(TriangleMesh{p.data(), 0, triangles.data(), 2}).find("no vertex positions"), std::string::npos);
 }
