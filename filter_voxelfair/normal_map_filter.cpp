@@ -145,9 +145,12 @@ bool FilterVoxelfairPlugin::applyNormalMap(MeshDocument &md, const RichParameter
     options.dilation = parameters.getInt("dilation");
     if (cb)
         cb(10, "Baking the normal map");
-    const NormalMap map = bakeNormalMap(high.view(), low.view(), options);
-    if (!map.ok)
-        return fail(QString("Bake Normal Map: %1").arg(QString::fromStdString(map.message)));
+    NormalMap map;
+    try {
+        map = bakeNormalMap(high.view(), low.view(), options);
+    } catch (const Error &e) {
+        return fail(QString("Bake Normal Map: %1").arg(e.what()));
+    }
 
     if (cb)
         cb(80, "Writing the normal map");

@@ -20,21 +20,16 @@ namespace {
 
 constexpr double kMargin = -1.0 / 256;  // the base colour bake's overlap rule (atlas/bake.cpp)
 
-bool validate(const NormalBakeMesh &m, const char *what, std::string &message) {
-    if (m.faceCount == 0) {
-        message = std::string("the ") + what + " mesh has no faces";
-        return false;
-    }
-    if (!m.positions || !m.normals || !m.triangles || !m.wedgeUv) {
-        message = std::string("the ") + what + " mesh lacks positions, normals, triangles or texture coordinates";
-        return false;
-    }
+void validate(const NormalBakeMesh &m, const char *what) {
+    if (m.faceCount == 0)
+        throw MeshError(std::string("the ") + what + " mesh has no faces");
+    if (!m.positions || !m.normals || !m.triangles || !m.wedgeUv)
+        throw MeshError(std::string("the ") + what +
+                        " mesh lacks positions, normals, triangles or texture coordinates");
     for (size_t i = 0; i < 3 * m.faceCount; ++i)
-        if (m.triangles[i] >= m.vertexCount) {
-            message = std::string("the ") + what + " mesh has a vertex index out of range";
-            return false;
-        }
-    return true;
+        if (m.triangles[i] >= m.vertexCount)
+            throw MeshError(std::string("the ") + what + " mesh has a vertex index out of range (face " +
+                            std::to_string(i / 3) + ")");
 }
 
 void loadUv(const NormalBakeMesh &m, size_t f, int width, int height, glm::dvec2 q[3]) {
@@ -220,13 +215,11 @@ struct SortedSource {
 
 NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &target, const NormalBakeOptions &options) {
     NormalMap out;
-    if (!validate(source, "source", out.message) || !validate(target, "target", out.message))
-        return out;
+    validate(source, "source");
+    validate(target, "target");
     const int width = options.width, height = options.height > 0 ? options.height : options.width;
-    if (width < 1 || width > 16384 || height < 1 || height > 16384) {
-        out.message = "the texture's sides must be between 1 and 16384 texels";
-        return out;
-    }
+    if (width < 1 || width > 16384 || height < 1 || height > 16384)
+        throw OptionError("the normal map's sides must be between 1 and 16384 texels");
     const size_t texels = size_t(width) * size_t(height);
     out.width = width;
     out.height = height;
@@ -391,7 +384,6 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
         p[0] = encodeFast(c.x), p[1] = encodeFast(c.y), p[2] = encodeFast(c.z);
         return true;
     });
-    out.ok = true;
     return out;
 }
 

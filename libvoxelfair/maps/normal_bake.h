@@ -24,6 +24,7 @@
 // each band walks from its own starting points, so the map is the same for any thread count.
 #pragma once
 
+#include "base/error.h"
 #include "mesh/triangle_mesh.h"
 
 #include <cstddef>
@@ -62,8 +63,6 @@ struct NormalBakeOptions {
 };
 
 struct NormalMap {
-    bool ok = false;
-    std::string message;  // why not, when !ok
     int width = 0, height = 0;
     // width x height RGBA8, rows from the top (v = 1) down like AtlasTexture; alpha 255.
     std::vector<uint8_t> rgba;
@@ -74,8 +73,9 @@ struct NormalMap {
     size_t texelsWithoutSource = 0;  // target texels left flat (no source face near their UV, or no frame)
 };
 
-// Returns !ok with a message for empty or inconsistent input (null arrays, indices out of range,
-// a side outside [1, 16384]).
+// Throws MeshError for empty or inconsistent meshes (no faces, null arrays, indices out of range;
+// the message names the source or target mesh) and OptionError for a side outside [1, 16384]
+// (the library's one error style, base/error.h).
 NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &target, const NormalBakeOptions &options);
 
 // The target's per-corner tangents alone (positions, normals and UVs per corner, as MikkTSpace
