@@ -43,16 +43,10 @@
 // edge classes and the cells always come from the input. The stages are in fairing/constrained/
 // (fairing_state.h lists them).
 //
-// Measured with the defaults on the shape families of testkit/shapes/shape_families.h (random
-// orientations and sub-voxel offsets, 4 each; tests/fairing/family_fidelity_test.cpp), worst RMS
-// distance to the true surface in voxels: spheres, ellipsoids, tori, capsules 0.072; cylinders
-// and cones at any angle 0.15; boxes on the lattice 0 (exact); rounded boxes at any orientation
-// 0.073; a hull with a barrel 0.11; boxes turned about one or two axes, plates, wedges, chamfered
-// plates 0.14-0.17; rounded boxes on the lattice 0.14. Volume within 1% except where the voxels
-// themselves are further off, and on rounded boxes on the lattice (3.7%). On the older fixed set
-// (tests/fairing/constrained_fidelity_test.cpp) at most 0.091 on spheres and tori, 0.16 on
-// cylinders along the axes, exact on boxes. Its cost is measured by benchmarks/fairing_benchmark
-// (figures in the README's performance table).
+// How near it comes to the true surface on the shape families of testkit/shapes/shape_families.h
+// (random orientations and sub-voxel offsets; tests/fairing/family_fidelity_test.cpp asserts the
+// goals) and what it costs (benchmarks/fairing_benchmark) are measured in one place: the
+// README's comparison table and performance table.
 #pragma once
 
 #include "fairing/lanczos_fairing.h"  // FairingStatus
