@@ -23,33 +23,30 @@ const char *toString(BakeSource source) {
 
 namespace {
 
-// Texel states while baking; kWall marks the canvas's one-texel frame.
-enum : uint8_t { kEmpty, kCentre, kEdge, kRing, kQueued, kWall };
-
 // Slightly strict coverage (see kMaskMargin in chart_masks.cpp): the bake never paints outside
 // the packed masks.
 constexpr double kBakeMargin = -1.0 / 256;
 
-struct Texel {
-    uint8_t r, g, b, a;
-};
-
-// The image with a one-texel frame, rows from the top, so neighbours are fixed offsets and the
-// rows copy straight into AtlasTexture::rgba.
+// The image being baked: RGBA rows from the top, as AtlasTexture::rgba, and per texel whether
+// it is painted (a face's texel or a dilation ring's).
 struct Canvas {
-    int height, pitch;
-    std::vector<Texel> texels;
-    std::vector<uint8_t> state;
-    Canvas(int width, int height, Texel background)
-        : height(height), pitch(width + 2), texels(size_t(pitch) * size_t(height + 2), background),
-          state(texels.size(), kEmpty) {
-        for (int i = 0; i < pitch; ++i)
-            state[size_t(i)] = state[size_t(height + 1) * pitch + i] = kWall;
-        for (int j = 0; j < height + 2; ++j)
-            state[size_t(j) * pitch] = state[size_t(j) * pitch + pitch - 1] = kWall;
+    int width, height;
+    std::vector<uint8_t> &rgba;
+    std::vector<uint8_t> filled;
+    Canvas(int width, int height, glm::u8vec4 background, std::vector<uint8_t> &rgba)
+        : width(width), height(height), rgba(rgba), filled(size_t(width) * size_t(height), 0) {
+        rgba.assign(filled.size() * 4, 0);
+        if (background != glm::u8vec4(0))
+            for (size_t i = 0; i < filled.size(); ++i)
+                std::memcpy(&rgba[4 * i], &background, 4);
     }
     // Layout texel (x, y), y up.
-    size_t index(int x, int y) const { return size_t(height - y) * pitch + size_t(x + 1); }
+    size_t index(int x, int y) const { return size_t(height - 1 - y) * size_t(width) + size_t(x); }
+    void paint(size_t i, glm::u8vec3 c) {
+        const uint8_t texel[4] = {c.r, c.g, c.b, 255};
+        std::memcpy(&rgba[4 * i], texel, 4);
+        filled[i] = 1;
+    }
 };
 
 BakeSource chooseSource(const AtlasMesh &mesh, BakeSource wanted, std::string &note) {
@@ -71,46 +68,62 @@ BakeSource chooseSource(const AtlasMesh &mesh, BakeSource wanted, std::string &n
 
 // Fills `rings` rings of empty texels around the painted ones, each with the mean of its
 // already painted 8-neighbours; charts grow into the gutter from both sides at the same pace.
+// The first ring is the empty texels with a filled 8-neighbour, found a row at a time (the rows
+// above, at and below or-ed, then each texel's left and right); each later ring, the empty
+// neighbours of the ring before.
 void dilate(Canvas &canvas, int rings) {
-    const std::ptrdiff_t p = canvas.pitch;
-    const std::ptrdiff_t around[8] = {-p - 1, -p, -p + 1, -1, 1, p - 1, p, p + 1};
-    std::vector<uint8_t> &state = canvas.state;
+    const int width = canvas.width, height = canvas.height;
+    std::vector<uint8_t> &filled = canvas.filled;  // 1 filled, 2 in the ring being found
+    std::vector<uint8_t> column(size_t(width) + 2, 0), near(size_t(width), 0);
     std::vector<uint32_t> frontier, next;
-    auto enqueueEmptyNeighbours = [&](size_t i, std::vector<uint32_t> &queue) {
-        for (std::ptrdiff_t d : around) {
-            const size_t j = size_t(std::ptrdiff_t(i) + d);
-            if (state[j] == kEmpty) {
-                state[j] = kQueued;
-                queue.push_back(uint32_t(j));
-            }
+    for (int row = 0; row < height && rings > 0; ++row) {
+        const uint8_t *mid = &filled[size_t(row) * size_t(width)];
+        const uint8_t *up = row > 0 ? mid - width : mid, *down = row + 1 < height ? mid + width : mid;
+        for (int x = 0; x < width; ++x)
+            column[size_t(x) + 1] = uint8_t(up[x] | mid[x] | down[x]);
+        for (int x = 0; x < width; ++x)
+            near[size_t(x)] = uint8_t((column[size_t(x)] | column[size_t(x) + 1] | column[size_t(x) + 2]) & ~mid[x]);
+        for (int x = 0; x < width; x += 8) {
+            uint64_t word = 0;
+            std::memcpy(&word, &near[size_t(x)], size_t(std::min(8, width - x)));
+            for (int k = 0; word != 0 && k < 8; ++k, word >>= 8)
+                if (word & 0xFF)
+                    frontier.push_back(uint32_t(size_t(row) * size_t(width) + size_t(x + k)));
         }
-    };
-    for (size_t i = 0; i < state.size(); ++i)
-        if (state[i] == kCentre || state[i] == kEdge)
-            enqueueEmptyNeighbours(i, frontier);
-    std::vector<Texel> colours;
+    }
+    std::vector<uint8_t> colours;
     for (int ring = 0; ring < rings && !frontier.empty(); ++ring) {
-        colours.resize(frontier.size());
+        colours.resize(3 * frontier.size());
         for (size_t k = 0; k < frontier.size(); ++k) {
-            unsigned r = 0, g = 0, b = 0, count = 0;
-            for (std::ptrdiff_t d : around) {
-                const size_t j = size_t(std::ptrdiff_t(frontier[k]) + d);
-                if (state[j] == kCentre || state[j] == kEdge || state[j] == kRing) {
-                    const Texel &t = canvas.texels[j];
-                    r += t.r, g += t.g, b += t.b, ++count;
+            const int row = int(frontier[k] / uint32_t(width)), x = int(frontier[k] % uint32_t(width));
+            unsigned sum[3] = {0, 0, 0}, count = 0;
+            for (int ny = std::max(0, row - 1); ny <= std::min(height - 1, row + 1); ++ny)
+                for (int nx = std::max(0, x - 1); nx <= std::min(width - 1, x + 1); ++nx) {
+                    const size_t j = size_t(ny) * size_t(width) + size_t(nx);
+                    if (filled[j] == 1) {
+                        for (int ch = 0; ch < 3; ++ch)
+                            sum[ch] += canvas.rgba[4 * j + size_t(ch)];
+                        ++count;
+                    }
                 }
-            }
-            colours[k] = {uint8_t((r + count / 2) / count), uint8_t((g + count / 2) / count),
-                          uint8_t((b + count / 2) / count), 255};
+            for (int ch = 0; ch < 3; ++ch)
+                colours[3 * k + size_t(ch)] = uint8_t((sum[ch] + count / 2) / count);
         }
-        for (size_t k = 0; k < frontier.size(); ++k) {
-            canvas.texels[frontier[k]] = colours[k];
-            state[frontier[k]] = kRing;
-        }
+        for (size_t k = 0; k < frontier.size(); ++k)
+            canvas.paint(frontier[k], {colours[3 * k], colours[3 * k + 1], colours[3 * k + 2]});
         next.clear();
         if (ring + 1 < rings)
-            for (uint32_t i : frontier)
-                enqueueEmptyNeighbours(i, next);
+            for (uint32_t i : frontier) {
+                const int row = int(i / uint32_t(width)), x = int(i % uint32_t(width));
+                for (int ny = std::max(0, row - 1); ny <= std::min(height - 1, row + 1); ++ny)
+                    for (int nx = std::max(0, x - 1); nx <= std::min(width - 1, x + 1); ++nx) {
+                        const size_t j = size_t(ny) * size_t(width) + size_t(nx);
+                        if (filled[j] == 0) {
+                            filled[j] = 2;
+                            next.push_back(uint32_t(j));
+                        }
+                    }
+            }
         frontier.swap(next);
     }
 }
@@ -129,14 +142,8 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
     out.size = out.width = layout.width;
     out.height = layout.height;
     const int width = layout.width, height = layout.height;
-    const glm::u8vec4 bg = options.background;
-    Canvas canvas(width, height, Texel{bg.r, bg.g, bg.b, bg.a});
+    Canvas canvas(width, height, options.background, out.rgba);
 
-    auto paint = [&](int x, int y, glm::u8vec3 c, uint8_t how) {
-        const size_t i = canvas.index(x, y);
-        canvas.texels[i] = {c.r, c.g, c.b, 255};
-        canvas.state[i] = how;
-    };
     auto colourAt = [&](size_t f, const glm::dvec2 *q, double x, double y) -> glm::u8vec3 {
         if (out.source == BakeSource::FaceColours)
             return mesh.faceColours[f];
@@ -166,6 +173,7 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
     // those it only overlaps that nothing painted yet; a later face's centre texels overwrite
     // such edge texels. Crisp bakes also note the faces too thin for the centre rule (below).
     const bool crisp = out.source == BakeSource::FaceColours;
+    const bool uniform = out.source != BakeSource::VertexColours;  // one colour per face
     std::vector<uint32_t> thin;
     glm::dvec2 points[4] = {};
     for (size_t f = 0; f < mesh.faceCount; ++f) {
@@ -175,11 +183,22 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
             if (inradius > 0 && inradius < std::sqrt(2.0))
                 thin.push_back(uint32_t(f));
         }
-        rasterCentres(q[0], q[1], q[2], width, height,
-                      [&](int x, int y) { paint(x, y, colourAt(f, q, x + 0.5, y + 0.5), kCentre); });
-        rasterConservative(q[0], q[1], q[2], kBakeMargin, width, height, [&](int x, int y) {
-            if (canvas.state[canvas.index(x, y)] == kEmpty)
-                paint(x, y, colourAt(f, q, x + 0.5, y + 0.5), kEdge);
+        const glm::u8vec3 faceColour = uniform ? colourAt(f, q, 0, 0) : glm::u8vec3(0);
+        auto paintEdges = [&](size_t row, int y, int from, int to) {
+            for (int x = from; x <= to; ++x)
+                if (!canvas.filled[row + size_t(x)])
+                    canvas.paint(row + size_t(x), uniform ? faceColour : colourAt(f, q, x + 0.5, y + 0.5));
+        };
+        rasterRows(q[0], q[1], q[2], kBakeMargin, width, height, [&](int y, int cl, int cr, int zl, int zr) {
+            const size_t row = canvas.index(0, y);
+            for (int x = zl; x <= zr; ++x)
+                canvas.paint(row + size_t(x), uniform ? faceColour : colourAt(f, q, x + 0.5, y + 0.5));
+            if (zl > zr) {
+                paintEdges(row, y, cl, cr);
+            } else {
+                paintEdges(row, y, cl, std::min(cr, zl - 1));
+                paintEdges(row, y, std::max(cl, zr + 1), cr);
+            }
         });
     }
     // Faces too thin for the centre rule to guarantee their interior (UV inradius under sqrt(2)
@@ -192,15 +211,12 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
         load(f);
         faceInteriorPoints(q, points);
         for (const glm::dvec2 &p : points)
-            paint(std::clamp(int(std::floor(p.x)), 0, width - 1), std::clamp(int(std::floor(p.y)), 0, height - 1),
-                  mesh.faceColours[f], kCentre);
+            canvas.paint(canvas.index(std::clamp(int(std::floor(p.x)), 0, width - 1),
+                                      std::clamp(int(std::floor(p.y)), 0, height - 1)),
+                         mesh.faceColours[f]);
     }
     out.dilation = options.dilation < 0 ? layout.gutter / 2 : std::min(options.dilation, width);
     dilate(canvas, out.dilation);
-    out.rgba.resize(size_t(width) * size_t(height) * 4);
-    for (int row = 0; row < height; ++row)
-        std::memcpy(&out.rgba[size_t(row) * size_t(width) * 4], &canvas.texels[size_t(row + 1) * canvas.pitch + 1],
-                    size_t(width) * sizeof(Texel));
     return out;
 }
 

@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
+#include <cstdint>
+#include <limits>
+#include <vector>
 
 namespace voxelfair {
 namespace {
@@ -14,17 +16,17 @@ namespace {
 // the bake write a texel outside the packed mask.
 constexpr double kMaskMargin = 1.0 / 256;
 
-// out[i] = 1 where any of in[i - r .. i + r] is set (n samples).
-void dilateRow(const uint8_t *in, uint8_t *out, int n, int r) {
-    int count = 0;
-    for (int i = 0; i < std::min(r, n); ++i)
-        count += in[i];
-    for (int i = 0; i < n; ++i) {
-        if (i + r < n)
-            count += in[i + r];
-        if (i - r - 1 >= 0)
-            count -= in[i - r - 1];
-        out[i] = count > 0;
+constexpr int kNone = std::numeric_limits<int>::max();
+
+// out[k] = the least of v[from + k - r .. from + k + r] (indices outside v left out), kNone
+// when all are kNone, for k in [0, count).
+void windowMin(const std::vector<int> &v, int from, int count, int r, int *out) {
+    const int n = int(v.size());
+    for (int k = 0; k < count; ++k) {
+        int best = kNone;
+        for (int j = std::max(0, from + k - r); j <= std::min(n - 1, from + k + r); ++j)
+            best = std::min(best, v[size_t(j)]);
+        out[k] = best;
     }
 }
 
@@ -35,9 +37,12 @@ bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int pa
     masks.profiles.clear();
     masks.texelsPerUnit = texelsPerUnit;
     masks.padding = padding;
-    masks.totalMaskTexels = 0;
-    std::vector<uint8_t> bits, grown;
-    std::vector<int> columnCount;
+    masks.totalRowTexels = 0;
+    // The footprint's extent per row (leftmost, rightmost column) and per column (lowest,
+    // highest row) in the chart's canvas; kNone where nothing is set. Only these extents reach
+    // the packers, so the footprint itself is never stored: the square dilation by `padding`
+    // turns into a sliding minimum (maximum) of the extents over 2 * padding + 1 rows (columns).
+    std::vector<int> rowLeft, rowRight, colBottom, colTop, grown;
     const int border = padding + 1;  // the footprint may reach one texel below its box
     for (size_t c = 0; c < charts.chartCount(); ++c) {
         ChartMask &m = masks.charts[c];
@@ -46,45 +51,38 @@ bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int pa
         if (!(size.x < maxSide && size.y < maxSide))
             return false;
         const int w = int(std::ceil(size.x)) + 2 * border + 1, h = int(std::ceil(size.y)) + 2 * border + 1;
-        bits.assign(size_t(w) * h, 0);
-        int bx0 = w, bx1 = -1, by0 = h, by1 = -1;  // the footprint's box
+        rowLeft.assign(size_t(h), kNone);
+        rowRight.assign(size_t(h), -kNone);
+        colBottom.assign(size_t(w), kNone);
+        colTop.assign(size_t(w), -kNone);
         for (size_t i = charts.chartFirstFace[c]; i < charts.chartFirstFace[c + 1]; ++i) {
             const glm::vec2 *uv = &charts.wedgeUv[3 * i];
             rasterConservativeSpans(
                 glm::dvec2(uv[0]) * m.scale + double(border), glm::dvec2(uv[1]) * m.scale + double(border),
                 glm::dvec2(uv[2]) * m.scale + double(border), kMaskMargin, w, h, [&](int y, int xl, int xr) {
-                    std::memset(&bits[size_t(y) * w + xl], 1, size_t(xr) - size_t(xl) + 1);
-                    bx0 = std::min(bx0, xl), bx1 = std::max(bx1, xr);
-                    by0 = std::min(by0, y), by1 = std::max(by1, y);
+                    rowLeft[size_t(y)] = std::min(rowLeft[size_t(y)], xl);
+                    rowRight[size_t(y)] = std::max(rowRight[size_t(y)], xr);
+                    int *bottom = colBottom.data(), *top = colTop.data();
+                    for (int x = xl; x <= xr; ++x) {
+                        bottom[x] = std::min(bottom[x], y);
+                        top[x] = std::max(top[x], y);
+                    }
                 });
         }
+        int bx0 = w, bx1 = -1, by0 = h, by1 = -1;  // the footprint's box
+        for (int y = 0; y < h; ++y)
+            if (rowLeft[size_t(y)] != kNone) {
+                by0 = std::min(by0, y), by1 = y;
+                bx0 = std::min(bx0, rowLeft[size_t(y)]), bx1 = std::max(bx1, rowRight[size_t(y)]);
+            }
         if (bx1 < 0) {  // nothing rasterised (cannot happen for a chart with area): keep one texel
             bx0 = bx1 = by0 = by1 = border;
-            bits[size_t(border) * w + border] = 1;
+            rowLeft[size_t(border)] = rowRight[size_t(border)] = border;
+            colBottom[size_t(border)] = colTop[size_t(border)] = border;
         }
-        for (int y = by0; y <= by1; ++y)
-            for (int x = bx0; x <= bx1; ++x)
-                m.coveredTexels += bits[size_t(y) * w + x];
 
-        // Square dilation by `padding`, separable: each row, then a running count down the
-        // columns (row by row, so memory is read in order). The box grows by `padding`.
+        // The box grows by `padding`; so does every extent.
         const int x0 = bx0 - padding, x1 = bx1 + padding, y0 = by0 - padding, y1 = by1 + padding;
-        if (padding > 0) {
-            grown.assign(bits.size(), 0);
-            for (int y = by0; y <= by1; ++y)
-                dilateRow(&bits[size_t(y) * w + x0], &grown[size_t(y) * w + x0], x1 - x0 + 1, padding);
-            columnCount.assign(size_t(w), 0);
-            for (int y = y0; y <= y1; ++y) {
-                if (y + padding <= by1)
-                    for (int x = x0; x <= x1; ++x)
-                        columnCount[x] += grown[size_t(y + padding) * w + x];
-                if (y - padding - 1 >= by0)
-                    for (int x = x0; x <= x1; ++x)
-                        columnCount[x] -= grown[size_t(y - padding - 1) * w + x];
-                for (int x = x0; x <= x1; ++x)
-                    bits[size_t(y) * w + x] = columnCount[x] > 0;
-            }
-        }
         m.width = x1 - x0 + 1;
         m.height = y1 - y0 + 1;
         if (m.width > maxSide || m.height > maxSide)
@@ -95,20 +93,28 @@ bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int pa
         masks.profiles.resize(m.profile + 2 * size_t(m.width) + 2 * size_t(m.height));
         int16_t *bottom = masks.profiles.data() + m.profile, *top = bottom + m.width;
         int16_t *left = top + m.width, *right = left + m.height;
-        std::fill(bottom, bottom + m.width, int16_t(m.height));
-        std::fill(top, top + m.width, int16_t(-1));
-        std::fill(left, left + m.height, int16_t(m.width));
-        std::fill(right, right + m.height, int16_t(-1));
-        for (int y = 0; y < m.height; ++y)
-            for (int x = 0; x < m.width; ++x)
-                if (bits[size_t(y + y0) * w + x + x0]) {
-                    ++m.maskTexels;
-                    bottom[x] = std::min<int16_t>(bottom[x], int16_t(y));
-                    top[x] = int16_t(y);
-                    left[y] = std::min<int16_t>(left[y], int16_t(x));
-                    right[y] = int16_t(x);
-                }
-        masks.totalMaskTexels += m.maskTexels;
+        // The dilated mask's extent on a line is the footprint's over the 2 * padding + 1 lines
+        // around it, widened by padding; maxima are taken as minima of the negations.
+        for (int &v : rowRight)
+            v = -v;
+        for (int &v : colTop)
+            v = -v;
+        grown.resize(size_t(std::max(m.width, m.height)));
+        auto extents = [&](const std::vector<int> &lo, const std::vector<int> &hiNegated, int from, int count,
+                           int shift, int emptyLo, int16_t *outLo, int16_t *outHi) {
+            int64_t texels = 0;
+            windowMin(lo, from, count, padding, grown.data());
+            for (int k = 0; k < count; ++k)
+                outLo[k] = int16_t(grown[size_t(k)] == kNone ? emptyLo : grown[size_t(k)] - padding - shift);
+            windowMin(hiNegated, from, count, padding, grown.data());
+            for (int k = 0; k < count; ++k) {
+                outHi[k] = int16_t(grown[size_t(k)] == kNone ? -1 : -grown[size_t(k)] + padding - shift);
+                texels += std::max(0, outHi[k] - outLo[k] + 1);
+            }
+            return texels;
+        };
+        masks.totalRowTexels += size_t(extents(rowLeft, rowRight, y0, m.height, x0, m.width, left, right));
+        extents(colBottom, colTop, x0, m.width, y0, m.height, bottom, top);
     }
     return true;
 }

@@ -2,6 +2,11 @@
 // coverage, the texels the bake will write) and grown by `padding` texels on every side
 // (a square, Chebyshev, dilation). Two masks placed without overlap therefore keep their
 // charts at least 2 * padding empty texels apart: the gutter.
+//
+// The packers only read a mask's extent on each row and column, so only those are kept: the
+// triangles' row spans give the footprint's extents, and the dilation of a set by a square is,
+// per row (column), the extents of the 2 * padding + 1 rows (columns) around it widened by
+// padding. No per-texel image is built.
 #pragma once
 
 #include "atlas/charts.h"
@@ -20,8 +25,6 @@ struct ChartMask {
     // the density (1 for degenerate charts, whose UVs are already texels).
     double scale = 0;
     glm::dvec2 offset{0.0};
-    size_t coveredTexels = 0;  // conservative footprint, before the padding
-    size_t maskTexels = 0;     // set texels, padding included
     // Into ChartMasks::profiles: for each column x of the mask its lowest and highest set row,
     // for each row y its leftmost and rightmost set column.
     size_t profile = 0;
@@ -36,7 +39,9 @@ struct ChartMasks {
     std::vector<int16_t> profiles;
     double texelsPerUnit = 0;
     int padding = 0;
-    size_t totalMaskTexels = 0;  // no packing of the masks takes less room
+    // Texels between the leftmost and rightmost set texel of every row of every mask: no
+    // packing of the masks takes less room (the tight packer takes these spans or more).
+    size_t totalRowTexels = 0;
 };
 
 // Where a packer put a chart: the mask's lower-left corner in the texture, after turning it by

@@ -189,7 +189,7 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
                 longestShort = std::max(longestShort, std::min(m.width, m.height));
             }
             // The smallest square whose area holds the masks, or half of it when wide.
-            const double room = double(packing.masks.totalMaskTexels);
+            const double room = double(packing.masks.totalRowTexels);
             int side = nextPowerOfTwo(std::max<double>(longest, std::sqrt(room)));
             height = side;
             if (wide && side > 1 && double(side) * side / 2 >= room && side / 2 >= longestShort)

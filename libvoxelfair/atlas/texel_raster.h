@@ -68,40 +68,126 @@ inline bool setup(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, Setup &s) {
 }
 inline int clampToInt(double v, int lo, int hi) { return int(std::clamp(v, double(lo), double(hi))); }
 
-// Rows y0..y1 of texels x0..x1: on each, the texels whose point (x + 0.5 + shift, y + 0.5)
-// satisfies edge i's inequality at(x, y) + reach[i] >= 0 for all three edges form one interval
-// (each inequality is a half-line in x). It is solved for, then its two ends are settled with
-// `inside`, the exact per-texel test, so the spans are exactly the texels that test accepts.
+// Per edge, what solving a row needs: k = -ey (the test's slope in x), its inverse, and how
+// near (in texels) a solved bound may come to a texel position before float rounding could
+// settle that texel differently from the exact per-texel test: far above the few ulps of
+// the largest term either computation adds up (coordinates and edges in texels, below 2^24).
+struct EdgeBound {
+    double k = 0, inverse = 0, tolerance = 0;
+};
+inline void edgeBounds(const Setup &s, const double reach[3], EdgeBound out[3]) {
+    const double c = std::max({std::abs(s.minX), std::abs(s.maxX), std::abs(s.minY), std::abs(s.maxY)}) + 2;
+    for (int i = 0; i < 3; ++i) {
+        const Edge &e = s.e[i];
+        const double k = -e.ey, magnitude = (std::abs(e.ex) + std::abs(e.ey)) * 2 * c + std::abs(reach[i]);
+        out[i] = {k, k != 0 ? 1 / k : 0, 1e-12 * magnitude / (k != 0 ? std::abs(k) : 1.0)};
+    }
+}
+inline int floorToInt(double v) {  // |v| < 2^31
+    const int i = int(v);
+    return i > v ? i - 1 : i;
+}
+
+// Row y of texels x0..x1: the texels whose point (x + 0.5, y + 0.5) satisfies edge i's
+// inequality at(x, y) + reach[i] >= 0 for all three edges form one interval (each inequality is
+// a half-line in x), [xl, xr] (xl > xr: none). It is solved for; where a solved end lies so
+// near a texel position that rounding could decide that texel either way, the ends are
+// settled with `inside`, the exact per-texel test. Either way the span is exactly the texels
+// that test accepts.
+template <class Inside>
+inline void rowSpan(const Setup &s, const double reach[3], const EdgeBound bound[3], int x0, int x1, int y,
+                    Inside &&inside, int &xl, int &xr) {
+    const double cy = y + 0.5;
+    int lo = x0, hi = x1;
+    bool clear = true;
+    for (int i = 0; i < 3; ++i) {  // k * (x + 0.5) + m >= 0
+        const double k = bound[i].k, m = s.e[i].at(0.0, cy) + reach[i];
+        if (k == 0) {
+            clear = clear && std::abs(m) > bound[i].tolerance;
+            if (m < 0)
+                hi = lo - 1;
+            continue;
+        }
+        const double t = std::clamp(-m * bound[i].inverse - 0.5, double(x0) - 2, double(x1) + 2);
+        const int below = floorToInt(t);  // t in [below, below + 1)
+        clear = clear && t - below > bound[i].tolerance && below + 1 - t > bound[i].tolerance;
+        if (k > 0)
+            lo = std::max(lo, t > below ? below + 1 : below);  // ceil
+        else
+            hi = std::min(hi, below);
+    }
+    xl = std::min(lo, x1 + 1), xr = std::max(hi, x0 - 1);
+    if (clear)
+        return;
+    while (xl <= xr && !inside(xl, y))
+        ++xl;
+    while (xr >= xl && !inside(xr, y))
+        --xr;
+    if (xl > xr)  // rounding may have lost a one-texel span: look next to where it was
+        xr = xl - 1;
+    while (xl > x0 && inside(xl - 1, y))
+        --xl;
+    while (xr < x1 && inside(xr + 1, y))
+        ++xr;
+}
+
+// Rows y0..y1 of texels x0..x1, each row's span (rowSpan) visited when not empty.
 template <class Inside, class VisitSpan>
 void spans(const Setup &s, const double reach[3], int x0, int x1, int y0, int y1, Inside &&inside,
            VisitSpan &&visitSpan) {
+    EdgeBound bound[3];
+    edgeBounds(s, reach, bound);
     for (int y = y0; y <= y1; ++y) {
-        const double cy = y + 0.5;
-        double lo = x0, hi = x1;
-        for (int i = 0; i < 3; ++i) {  // k * (x + 0.5) + m >= 0
-            const double k = -s.e[i].ey, m = s.e[i].at(0.0, cy) + reach[i];
-            if (k > 0)
-                lo = std::max(lo, std::ceil(-m / k - 0.5));
-            else if (k < 0)
-                hi = std::min(hi, std::floor(-m / k - 0.5));
-            else if (m < 0)
-                hi = lo - 1;
-        }
-        int xl = int(std::clamp(lo, double(x0), double(x1) + 1)), xr = int(std::clamp(hi, double(x0) - 1, double(x1)));
-        while (xl <= xr && !inside(xl, y))
-            ++xl;
-        while (xr >= xl && !inside(xr, y))
-            --xr;
-        if (xl > xr)  // rounding may have lost a one-texel span: look next to where it was
-            xr = xl - 1;
-        while (xl > x0 && inside(xl - 1, y))
-            --xl;
-        while (xr < x1 && inside(xr + 1, y))
-            ++xr;
+        int xl, xr;
+        rowSpan(s, reach, bound, x0, x1, y, inside, xl, xr);
         if (xl <= xr)
             visitSpan(y, xl, xr);
     }
 }
+
+// The conservative test (texel square grown by `margin` meets the triangle, by three
+// half-planes) and the centre test (top-left rule) of one triangle, with their texel ranges.
+struct ConservativeTest {
+    const Setup &s;
+    double reach[3];
+    int x0, x1, y0, y1;
+    ConservativeTest(const Setup &setup, double margin, int width, int height) : s(setup) {
+        x0 = clampToInt(std::ceil(s.minX - 1 - margin), 0, width);
+        x1 = clampToInt(std::floor(s.maxX + margin), -1, width - 1);
+        y0 = clampToInt(std::ceil(s.minY - 1 - margin), 0, height);
+        y1 = clampToInt(std::floor(s.maxY + margin), -1, height - 1);
+        const double h = 0.5 + margin;
+        for (int i = 0; i < 3; ++i)
+            reach[i] = s.e[i].reach(h);
+    }
+    bool operator()(int x, int y) const {
+        const double cx = x + 0.5, cy = y + 0.5;
+        return s.e[0].at(cx, cy) + reach[0] >= 0 && s.e[1].at(cx, cy) + reach[1] >= 0 &&
+               s.e[2].at(cx, cy) + reach[2] >= 0;
+    }
+};
+struct CentreTest {
+    const Setup &s;
+    bool tl[3];
+    int x0, x1, y0, y1;
+    CentreTest(const Setup &setup, int width, int height) : s(setup) {
+        x0 = clampToInt(std::ceil(s.minX - 0.5), 0, width);
+        x1 = clampToInt(std::floor(s.maxX - 0.5), -1, width - 1);
+        y0 = clampToInt(std::ceil(s.minY - 0.5), 0, height);
+        y1 = clampToInt(std::floor(s.maxY - 0.5), -1, height - 1);
+        for (int i = 0; i < 3; ++i)
+            tl[i] = s.e[i].topLeft();
+    }
+    bool operator()(int x, int y) const {
+        const double cx = x + 0.5, cy = y + 0.5;
+        for (int i = 0; i < 3; ++i) {
+            const double v = s.e[i].at(cx, cy);
+            if (!(v > 0 || (v == 0 && tl[i])))
+                return false;
+        }
+        return true;
+    }
+};
 }  // namespace raster_detail
 
 // Calls visitSpan(y, x0, x1) for every row y with texels inside [0, width) x [0, height) whose
@@ -115,20 +201,10 @@ void rasterConservativeSpans(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double ma
     raster_detail::Setup s;
     if (!raster_detail::setup(a, b, c, s))
         return;
-    const int x0 = raster_detail::clampToInt(std::ceil(s.minX - 1 - margin), 0, width);
-    const int x1 = raster_detail::clampToInt(std::floor(s.maxX + margin), -1, width - 1);
-    const int y0 = raster_detail::clampToInt(std::ceil(s.minY - 1 - margin), 0, height);
-    const int y1 = raster_detail::clampToInt(std::floor(s.maxY + margin), -1, height - 1);
-    if (x0 > x1)
+    const raster_detail::ConservativeTest test(s, margin, width, height);
+    if (test.x0 > test.x1)
         return;
-    const double h = 0.5 + margin;
-    const double reach[3] = {s.e[0].reach(h), s.e[1].reach(h), s.e[2].reach(h)};
-    auto inside = [&](int x, int y) {
-        const double cx = x + 0.5, cy = y + 0.5;
-        return s.e[0].at(cx, cy) + reach[0] >= 0 && s.e[1].at(cx, cy) + reach[1] >= 0 &&
-               s.e[2].at(cx, cy) + reach[2] >= 0;
-    };
-    raster_detail::spans(s, reach, x0, x1, y0, y1, inside, visitSpan);
+    raster_detail::spans(s, test.reach, test.x0, test.x1, test.y0, test.y1, test, visitSpan);
 }
 
 // The same texels one by one: visit(x, y).
@@ -140,6 +216,9 @@ void rasterConservative(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double margin,
     });
 }
 
+// Calls visit(x, y) for every texel inside [0, width) x [0, height) whose centre lies inside the
+// triangle; centres exactly on an edge follow the top-left rule, so the triangles of a planar,
+// non-overlapping mesh cover every centre at most once.
 // Calls visitSpan(y, x0, x1) for every row y of [0, width) x [0, height) with texels whose centre
 // lies inside the triangle: those are x0..x1. Centres exactly on an edge follow the top-left
 // rule, so the triangles of a planar, non-overlapping mesh cover every centre at most once.
@@ -148,24 +227,11 @@ void rasterCentreSpans(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, int width, int 
     raster_detail::Setup s;
     if (!raster_detail::setup(a, b, c, s))
         return;
-    const int x0 = raster_detail::clampToInt(std::ceil(s.minX - 0.5), 0, width);
-    const int x1 = raster_detail::clampToInt(std::floor(s.maxX - 0.5), -1, width - 1);
-    const int y0 = raster_detail::clampToInt(std::ceil(s.minY - 0.5), 0, height);
-    const int y1 = raster_detail::clampToInt(std::floor(s.maxY - 0.5), -1, height - 1);
-    if (x0 > x1)
+    const raster_detail::CentreTest test(s, width, height);
+    if (test.x0 > test.x1)
         return;
-    const bool tl[3] = {s.e[0].topLeft(), s.e[1].topLeft(), s.e[2].topLeft()};
-    auto inside = [&](int x, int y) {
-        const double cx = x + 0.5, cy = y + 0.5;
-        for (int i = 0; i < 3; ++i) {
-            const double v = s.e[i].at(cx, cy);
-            if (!(v > 0 || (v == 0 && tl[i])))
-                return false;
-        }
-        return true;
-    };
     const double reach[3] = {0, 0, 0};
-    raster_detail::spans(s, reach, x0, x1, y0, y1, inside, visitSpan);
+    raster_detail::spans(s, reach, test.x0, test.x1, test.y0, test.y1, test, visitSpan);
 }
 
 // The same texels one by one: visit(x, y).
@@ -175,6 +241,34 @@ void rasterCentres(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, int width, int heig
         for (int x = xl; x <= xr; ++x)
             visit(x, y);
     });
+}
+
+// Both at once, row by row, for a bake: visitRow(y, cl, cr, zl, zr) for every row with
+// conservative texels cl..cr (rasterConservativeSpans, margin > -0.5), of which zl..zr
+// (rasterCentres; zl > zr: none) hold their centre inside the triangle.
+template <class VisitRow>
+void rasterRows(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double margin, int width, int height, VisitRow &&visitRow) {
+    raster_detail::Setup s;
+    if (!raster_detail::setup(a, b, c, s))
+        return;
+    const raster_detail::ConservativeTest conservative(s, margin, width, height);
+    const raster_detail::CentreTest centre(s, width, height);
+    if (conservative.x0 > conservative.x1)
+        return;
+    const double zero[3] = {0, 0, 0};
+    raster_detail::EdgeBound conservativeBound[3], centreBound[3];
+    raster_detail::edgeBounds(s, conservative.reach, conservativeBound);
+    raster_detail::edgeBounds(s, zero, centreBound);
+    const bool centres = centre.x0 <= centre.x1;
+    for (int y = conservative.y0; y <= conservative.y1; ++y) {
+        int cl, cr, zl = 0, zr = -1;
+        raster_detail::rowSpan(s, conservative.reach, conservativeBound, conservative.x0, conservative.x1, y,
+                               conservative, cl, cr);
+        if (centres && y >= centre.y0 && y <= centre.y1)
+            raster_detail::rowSpan(s, zero, centreBound, centre.x0, centre.x1, y, centre, zl, zr);
+        if (cl <= cr || zl <= zr)
+            visitRow(y, cl, cr, zl, zr);
+    }
 }
 
 }  // namespace voxelfair

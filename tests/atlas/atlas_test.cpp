@@ -185,6 +185,77 @@ TEST(TexelRaster, SpansMatchTheTexelByTexelDefinition) {
     }
 }
 
+// The rows are solved in closed form and only settled texel by texel where rounding could
+// matter: far from the origin (a 16384 texture), slivers, nearly horizontal and vertical edges,
+// edges through texel centres and corners. Each row, conservative and centre spans alike, must
+// be exactly the texels the per-texel tests accept, and rasterRows the two together.
+TEST(TexelRaster, SolvedRowsMatchThePerTexelTestsFarOutAndOnSlivers) {
+    std::mt19937 rng(29);
+    std::uniform_real_distribution<double> unit(0, 1);
+    const int side = 16384;
+    for (int trial = 0; trial < 6000; ++trial) {
+        const glm::dvec2 origin(std::floor(unit(rng) * (side - 64)), std::floor(unit(rng) * (side - 64)));
+        glm::dvec2 p[3];
+        for (glm::dvec2 &q : p)
+            q = origin + glm::dvec2(unit(rng), unit(rng)) * 40.0;
+        switch (trial % 6) {
+        case 0:  // a sliver: the third corner near the first two's line
+            p[2] = p[0] + (p[1] - p[0]) * unit(rng) + glm::dvec2(1e-3, -2e-3) * unit(rng);
+            break;
+        case 1:  // a nearly horizontal edge
+            p[1] = glm::dvec2(p[0].x + 30, p[0].y + 1e-9 * unit(rng));
+            break;
+        case 2:  // corners on texel centres
+            for (glm::dvec2 &q : p)
+                q = glm::floor(q / 3.0) * 3.0 + 0.5;
+            break;
+        case 3:  // corners on texel corners
+            for (glm::dvec2 &q : p)
+                q = glm::floor(q / 5.0) * 5.0;
+            break;
+        case 4:  // a nearly vertical edge
+            p[1] = glm::dvec2(p[0].x + 1e-9 * unit(rng), p[0].y + 30);
+            break;
+        default: break;
+        }
+        if (doubleArea(p[0], p[1], p[2]) == 0)
+            continue;
+        const double margin = trial % 2 ? 1.0 / 256 : -1.0 / 256;
+        std::set<std::pair<int, int>> spans, centres, rowsConservative, rowsCentres, reference, centreReference;
+        rasterConservative(p[0], p[1], p[2], margin, side, side, [&](int x, int y) { spans.insert({x, y}); });
+        rasterCentres(p[0], p[1], p[2], side, side, [&](int x, int y) { centres.insert({x, y}); });
+        rasterRows(p[0], p[1], p[2], margin, side, side, [&](int y, int cl, int cr, int zl, int zr) {
+            for (int x = cl; x <= cr; ++x)
+                rowsConservative.insert({x, y});
+            for (int x = zl; x <= zr; ++x)
+                rowsCentres.insert({x, y});
+        });
+        glm::dvec2 q[3] = {p[0], p[1], p[2]};
+        if (doubleArea(q[0], q[1], q[2]) < 0)
+            std::swap(q[1], q[2]);
+        const glm::dvec2 lo = glm::min(q[0], glm::min(q[1], q[2])), hi = glm::max(q[0], glm::max(q[1], q[2]));
+        for (int y = int(lo.y) - 2; y <= int(hi.y) + 2; ++y)
+            for (int x = int(lo.x) - 2; x <= int(hi.x) + 2; ++x) {
+                bool in = x + 1 + margin >= lo.x && x - margin <= hi.x && y + 1 + margin >= lo.y && y - margin <= hi.y;
+                bool centre = true;
+                for (int i = 0; i < 3; ++i) {
+                    const glm::dvec2 a = q[i], e = q[(i + 1) % 3] - q[i];
+                    const double at = e.x * (y + 0.5 - a.y) - e.y * (x + 0.5 - a.x);
+                    in = in && at + (0.5 + margin) * (std::abs(e.x) + std::abs(e.y)) >= 0;
+                    centre = centre && (at > 0 || (at == 0 && (e.y < 0 || (e.y == 0 && e.x < 0))));
+                }
+                if (in)
+                    reference.insert({x, y});
+                if (centre)
+                    centreReference.insert({x, y});
+            }
+        ASSERT_EQ(spans, reference) << "trial " << trial;
+        ASSERT_EQ(centres, centreReference) << "trial " << trial;
+        ASSERT_EQ(rowsConservative, reference) << "trial " << trial;
+        ASSERT_EQ(rowsCentres, centreReference) << "trial " << trial;
+    }
+}
+
 TEST(TexelRaster, TopLeftRuleCoversEachCentreOnce) {
     // A square split along its diagonal, which passes through texel centres.
     std::vector<int> count(64, 0);
