@@ -234,6 +234,7 @@ TightPacking packTight(const ChartMasks &masks, int side, int height, bool allow
         }
         if (bestTop == INT32_MAX)
             return result;
+        result.top = std::max(result.top, bestTop);
         for (int r = 0; r < best.height; ++r)
             result.placedRoom += size_t(best.length(r));
         const ChartPlacement &p = placements[c];

@@ -22,6 +22,8 @@ struct TightPacking {
     // those placed before one did not fit. A packing that misses tells how full it got.
     size_t room = 0;
     size_t placedRoom = 0;
+    // On a fit: the rows the charts reach (the highest chart's top). The fill aims from it.
+    int top = 0;
 };
 
 // Packs into a side x height rectangle, side the width (both <= 16383).

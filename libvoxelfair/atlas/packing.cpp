@@ -30,6 +30,7 @@ struct Fit {
     bool fits = false;
     double grow = 0;
     double demand = 0, filled = 0;
+    double reached = 0;  // tight packer, on a fit: the share of the height its charts reach
 };
 
 // Places already rasterised masks in a side x height rectangle (the paper packer: a square).
@@ -38,7 +39,7 @@ Fit place(const ChartMasks &masks, PackMode mode, int side, int height, bool tur
     const double square = double(side) * height;
     if (mode == PackMode::Tight) {
         const TightPacking t = packTight(masks, side, height, turns, placements);
-        return {t.fits, 0, double(t.room) / square, double(t.placedRoom) / square};
+        return {t.fits, 0, double(t.room) / square, double(t.placedRoom) / square, double(t.top) / height};
     }
     const int used = packPaper(masks, placements);
     const double grow = double(side) / std::max(used, 1);
@@ -69,11 +70,50 @@ Fit attempt(const AtlasCharts &charts, const PackOptions &o, double density, int
 // The share of the texture the tight packer's charts (boxes, row spans) are first aimed at when
 // filling: it reaches 0.9 to 0.96 on voxel models' charts.
 constexpr double kFillAim = 0.92;
+// Better, from the first fit's packing: charts packed bottom-up to a share of the height reach
+// about that share times (density ratio)^2 once denser (the gutters grow less), so the fill aims
+// at this share of the height.
+constexpr double kFillHeightAim = 0.97;
 // A fill that would raise the density by less than this is skipped (it costs a packing).
 constexpr double kLeastFillGain = 1.04;
 
+// The factor on the density of `masks` (packed with the tight packer, fitting) at which the
+// charts' room, estimated from the masks (each mask's core scaled, its padding and conservative
+// rim kept), fills `efficiency` of a side x height rectangle: the packing's room per texel of
+// the rows it reached, which a denser packing of the same charts matches or beats. At most
+// `ceiling`.
+double fillScale(const ChartMasks &masks, int side, int height, double efficiency, double ceiling) {
+    const int64_t boxed = int64_t(side) * height / 1024;  // as pack_tight.cpp
+    const double rim = 2.0 * masks.padding + 1;
+    auto room = [&](double scale) {
+        double total = 0;
+        for (const ChartMask &m : masks.charts) {
+            const double w = m.width, h = m.height;
+            double now = w * h;
+            if (int64_t(m.width) * m.height >= boxed) {
+                now = 0;
+                const int16_t *l = m.rowLeft(masks.profiles), *r = m.rowRight(masks.profiles);
+                for (int y = 0; y < m.height; ++y)
+                    now += std::max(0, r[y] - l[y] + 1);
+            }
+            total += now * (std::max(0.0, w - rim) * scale + rim) * (std::max(0.0, h - rim) * scale + rim) / (w * h);
+        }
+        return total;
+    };
+    const double target = efficiency * side * height;
+    double lo = 1, hi = std::max(1.0, ceiling);
+    if (room(hi) <= target)
+        return hi;
+    for (int i = 0; i < 40; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (room(mid) <= target ? lo : hi) = mid;
+    }
+    return lo;
+}
+
 bool densestFit(const AtlasCharts &charts, const PackOptions &o, int padding, int side, int height, double ceiling,
-                Packing &best, double &density, size_t &attempts, double known = 0, double knownFilled = 0) {
+                Packing &best, double &density, size_t &attempts, double known = 0, double knownFilled = 0,
+                double knownReached = 0) {
     // Upper bound: the charts' projected area cannot exceed the texture, nor a chart its side.
     double area = 0, longest = 0;
     for (size_t c = 0; c < charts.chartCount(); ++c) {
@@ -90,10 +130,15 @@ bool densestFit(const AtlasCharts &charts, const PackOptions &o, int padding, in
         miss = std::min(miss, side / longest);
     miss = std::min(miss * 1.0001, ceiling);
     const double floor = miss * 1e-4;  // below this only the fixed-size parts (gutters) remain
-    double fit = known, d = miss * 0.85, reachable = 0.9, fitFilled = knownFilled;
+    double fit = known, d = miss * 0.85, reachable = 0.9, fitFilled = knownFilled, fallback = 0;
     if (known > 0) {
-        // Aim from the known fit: its room grows like the density squared.
-        d = knownFilled > 0 ? known * std::sqrt(kFillAim / knownFilled) : miss * 0.85;
+        // Aim from the known fit: the charts' room estimated at a higher density, filling as well as they did; should
+        // that miss, the packed height grown like the density squared (below it, usually).
+        fallback = knownReached > 0 ? known * std::sqrt(kFillHeightAim / knownReached) : 0;
+        d = knownReached > 0  ? known * fillScale(best.masks, side, height, knownFilled / knownReached, miss / known)
+            : knownFilled > 0 ? known * std::sqrt(kFillAim / knownFilled)
+                              : miss * 0.85;
+        d = std::max(d, fallback);
         if (d < known * kLeastFillGain) {  // nearly full already: not worth a packing
             density = known;
             return true;
@@ -114,11 +159,17 @@ bool densestFit(const AtlasCharts &charts, const PackOptions &o, int padding, in
             if (f.filled > 0)
                 reachable = f.filled;
         }
-        if (fit > 0 && miss <= fit * 1.005)
-            break;
+        if ((fit > 0 && miss <= fit * 1.005) || (known > 0 && f.fits))
+            break;  // bracketed; or filled: a fill tries again only after a miss
         reachable = std::max(reachable, fitFilled);
         double next = f.grow > 0 ? d * f.grow : f.demand > 0 ? d * std::sqrt(reachable / f.demand) : 0;
-        next *= 0.998;  // aim just below
+        next *= 0.998;                  // aim just below
+        if (!f.fits && fallback > 0) {  // the fill's second try
+            if (fallback < known * kLeastFillGain)
+                break;
+            next = fallback;
+            fallback = 0;
+        }
         if (!(next > std::max(fit, floor) * 1.001 && next < miss / 1.001))
             next = fit > 0 ? std::sqrt(fit * miss) : d * 0.7;
         d = next;
@@ -180,7 +231,7 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
         out.texelsPerUnit = options.texelsPerUnit;
         const bool wide = options.allowWide && options.mode == PackMode::Tight;
         bool fits = false;
-        double filled = 0;
+        double filled = 0, reached = 0;
         ++out.packAttempts;
         if (rasterizeChartMasks(charts, out.texelsPerUnit, padding, maxSide, packing.masks)) {
             int longest = 1, longestShort = 1;
@@ -201,6 +252,7 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
                     if (f.fits) {
                         fits = true;
                         filled = f.filled;
+                        reached = f.reached;
                         break;
                     }
                     ++out.packAttempts;
@@ -211,7 +263,7 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
             // The density is a minimum: raise it to fill the texture chosen.
             double density = out.texelsPerUnit;
             if (densestFit(charts, options, padding, out.size, height, INFINITY, packing, density, out.packAttempts,
-                           out.texelsPerUnit, filled))
+                           out.texelsPerUnit, filled, reached))
                 out.texelsPerUnit = density;
         }
         if (!fits) {

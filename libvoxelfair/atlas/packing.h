@@ -13,10 +13,13 @@
 //   * density -> texture (textureSize = 0, the default): texelsPerUnit is the least density; the
 //     texture is the smallest power of two holding the charts at it, square or 2:1 (s x s/2,
 //     width the longer side, allowWide), at most maxTextureSize; then, with fillTexture, the
-//     density is raised to the largest that still fits that texture (at most fillAttempts more
-//     packings, aimed from the first one's room; skipped when it would gain under 4%), so the
-//     charts fill it instead of leaving up to three quarters empty after rounding. If even the largest texture is too small the density is lowered
-//     until the charts fit (densityReduced).
+//     density is raised towards the largest that still fits that texture (at most fillAttempts
+//     more packings: first at the density where the charts' room, estimated from the first
+//     packing's masks, fills the texture as densely as that packing filled its rows; after a
+//     miss, where the first packing's height grown like the density squared reaches 97% of the
+//     texture; skipped when it would gain under 4%), so the charts fill it instead of leaving up
+//     to three quarters empty after rounding. If even the largest texture is too small the
+//     density is lowered until the charts fit (densityReduced).
 //   * texture -> density (textureSize > 0): the side is fixed (textureHeight: a non-square one)
 //     and the density is the largest that fits (4 to 10 packings): the authors' fixed
 //     1024 x 1024 texture, and how packing efficiency is measured.
@@ -50,9 +53,10 @@ struct PackOptions {
     // Density mode: allow a 2:1 texture (s x s/2) where the charts fit one. Tight packing only.
     bool allowWide = true;
     // Density mode: raise the density to fill the texture chosen (texelsPerUnit is then a
-    // minimum), with at most this many more packings. Tight packing only.
+    // minimum), with at most this many more packings (the second only after a miss). Tight
+    // packing only.
     bool fillTexture = true;
-    int fillAttempts = 1;
+    int fillAttempts = 2;
     // Largest side when textureSize = 0, rounded down to a power of two, at most 16384.
     int maxTextureSize = 4096;
     // Empty texels kept between any two charts; charts also stay gutter/2 texels from the

@@ -68,66 +68,94 @@ inline bool setup(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, Setup &s) {
 }
 inline int clampToInt(double v, int lo, int hi) { return int(std::clamp(v, double(lo), double(hi))); }
 
-// Per edge, what solving a row needs: k = -ey (the test's slope in x), its inverse, and how
-// near (in texels) a solved bound may come to a texel position before float rounding could
-// settle that texel differently from the exact per-texel test: far above the few ulps of
-// the largest term either computation adds up (coordinates and edges in texels, below 2^24).
-struct EdgeBound {
-    double k = 0, inverse = 0, tolerance = 0;
-};
-inline void edgeBounds(const Setup &s, const double reach[3], EdgeBound out[3]) {
-    const double c = std::max({std::abs(s.minX), std::abs(s.maxX), std::abs(s.minY), std::abs(s.maxY)}) + 2;
-    for (int i = 0; i < 3; ++i) {
-        const Edge &e = s.e[i];
-        const double k = -e.ey, magnitude = (std::abs(e.ex) + std::abs(e.ey)) * 2 * c + std::abs(reach[i]);
-        out[i] = {k, k != 0 ? 1 / k : 0, 1e-12 * magnitude / (k != 0 ? std::abs(k) : 1.0)};
-    }
-}
 inline int floorToInt(double v) {  // |v| < 2^31
     const int i = int(v);
-    return i > v ? i - 1 : i;
+    return i - int(i > v);
 }
 
-// Row y of texels x0..x1: the texels whose point (x + 0.5, y + 0.5) satisfies edge i's
-// inequality at(x, y) + reach[i] >= 0 for all three edges form one interval (each inequality is
-// a half-line in x), [xl, xr] (xl > xr: none). It is solved for; where a solved end lies so
-// near a texel position that rounding could decide that texel either way, the ends are
-// settled with `inside`, the exact per-texel test. Either way the span is exactly the texels
-// that test accepts.
-template <class Inside>
-inline void rowSpan(const Setup &s, const double reach[3], const EdgeBound bound[3], int x0, int x1, int y,
-                    Inside &&inside, int &xl, int &xr) {
-    const double cy = y + 0.5;
-    int lo = x0, hi = x1;
-    bool clear = true;
-    for (int i = 0; i < 3; ++i) {  // k * (x + 0.5) + m >= 0
-        const double k = bound[i].k, m = s.e[i].at(0.0, cy) + reach[i];
-        if (k == 0) {
-            clear = clear && std::abs(m) > bound[i].tolerance;
-            if (m < 0)
-                hi = lo - 1;
-            continue;
+// A triangle's rows solved in closed form for one test (edge i's inequality at(x, y) + reach[i]
+// >= 0, or the centre test's > 0 with its top-left rule on 0). For an edge with k = -ey != 0 the
+// test changes sign at x = t(y) on row y; t is linear in y, so it is kept as its value on the
+// first row (y0) and its step per row. Edges with k > 0 bound the span from below (ceil t), the
+// others from above (floor t); a triangle has one or two of each (the e.y sum to 0), unused
+// slots hold bounds that never bind. A horizontal edge (k = 0) keeps or drops whole rows.
+//
+// Rounding: a texel whose centre lies further than `tolerance` (texels) from t is classified by
+// t exactly as the per-texel test classifies it, whose value there is then far from 0: the
+// tolerance is far above the few ulps that either computation loses on its largest term
+// (coordinates, edges and texture sides below 2^24 texels).
+struct RowSolver {
+    double base[4], step[4], tolerance[4];  // 0, 1: lower bounds; 2, 3: upper bounds
+    int horizontal = -1;                    // the edge with k = 0, if any
+    int x0, x1, y0;
+    RowSolver(const Setup &s, const double reach[3], const double inverse[3], int x0, int x1, int y0)
+        : x0(x0), x1(x1), y0(y0) {
+        const double c = std::max({std::abs(s.minX), std::abs(s.maxX), std::abs(s.minY), std::abs(s.maxY)}) + 2;
+        int lower = 0, upper = 2;
+        for (int i = 0; i < 3; ++i) {
+            const Edge &e = s.e[i];
+            if (e.ey == 0) {
+                horizontal = i;
+                continue;
+            }
+            const int slot = e.ey < 0 ? lower++ : upper++;  // k = -ey
+            const double m = e.at(0.0, y0 + 0.5) + reach[i];
+            base[slot] = -m * inverse[i] - 0.5;
+            step[slot] = -e.ex * inverse[i];
+            tolerance[slot] =
+                1e-12 * ((std::abs(e.ex) + std::abs(e.ey)) * 2 * c + std::abs(reach[i])) * std::abs(inverse[i]);
         }
-        const double t = std::clamp(-m * bound[i].inverse - 0.5, double(x0) - 2, double(x1) + 2);
+        for (; lower < 2; ++lower)
+            base[lower] = x0 - 1.5, step[lower] = 0, tolerance[lower] = 0;
+        for (; upper < 4; ++upper)
+            base[upper] = x1 + 1.5, step[upper] = 0, tolerance[upper] = 0;
+    }
+};
+// Per edge, 1 / k (0 for a horizontal edge), shared by a triangle's solvers.
+inline void edgeInverses(const Setup &s, double inverse[3]) {
+    for (int i = 0; i < 3; ++i)
+        inverse[i] = s.e[i].ey != 0 ? -1 / s.e[i].ey : 0;
+}
+
+// Row y of texels x0..x1: the texels whose point (x + 0.5, y + 0.5) passes the test form one
+// interval (each edge's inequality is a half-line in x), [xl, xr] (xl > xr: none). It is solved
+// for (RowSolver); where a solved end lies so near a texel that rounding could decide that
+// texel either way, the ends are settled with `inside`, the exact per-texel test, from one
+// texel further out. Either way the span is exactly the texels that test accepts.
+template <class Inside>
+inline void rowSpan(const Setup &s, const double reach[3], const RowSolver &r, int y, Inside &&inside, int &xl,
+                    int &xr) {
+    const double j = y - r.y0;
+    int lo = r.x0, hi = r.x1;
+    bool clear = true;
+    for (int slot = 0; slot < 4; ++slot) {
+        const double t = std::clamp(r.base[slot] + j * r.step[slot], r.x0 - 1.5, r.x1 + 1.5);
         const int below = floorToInt(t);  // t in [below, below + 1)
-        clear = clear && t - below > bound[i].tolerance && below + 1 - t > bound[i].tolerance;
-        if (k > 0)
-            lo = std::max(lo, t > below ? below + 1 : below);  // ceil
+        clear = clear & (t - below > r.tolerance[slot]) & (below + 1 - t > r.tolerance[slot]);
+        if (slot < 2)
+            lo = std::max(lo, below + int(t > below));  // ceil
         else
             hi = std::min(hi, below);
     }
-    xl = std::min(lo, x1 + 1), xr = std::max(hi, x0 - 1);
+    if (r.horizontal >= 0) {  // its test's value is the same on the whole row, and exact
+        const double m = s.e[r.horizontal].at(0.0, y + 0.5) + reach[r.horizontal];
+        clear = clear & (m != 0);
+        if (m < 0)
+            hi = lo - 1;
+    }
+    xl = std::min(lo, r.x1 + 1), xr = std::max(hi, r.x0 - 1);
     if (clear)
         return;
+    xl = std::max(r.x0, xl - 1), xr = std::min(r.x1, xr + 1);
     while (xl <= xr && !inside(xl, y))
         ++xl;
     while (xr >= xl && !inside(xr, y))
         --xr;
-    if (xl > xr)  // rounding may have lost a one-texel span: look next to where it was
+    if (xl > xr)  // an empty start: look next to where it was
         xr = xl - 1;
-    while (xl > x0 && inside(xl - 1, y))
+    while (xl > r.x0 && inside(xl - 1, y))
         --xl;
-    while (xr < x1 && inside(xr + 1, y))
+    while (xr < r.x1 && inside(xr + 1, y))
         ++xr;
 }
 
@@ -135,11 +163,12 @@ inline void rowSpan(const Setup &s, const double reach[3], const EdgeBound bound
 template <class Inside, class VisitSpan>
 void spans(const Setup &s, const double reach[3], int x0, int x1, int y0, int y1, Inside &&inside,
            VisitSpan &&visitSpan) {
-    EdgeBound bound[3];
-    edgeBounds(s, reach, bound);
+    double inverse[3];
+    edgeInverses(s, inverse);
+    const RowSolver solver(s, reach, inverse, x0, x1, y0);
     for (int y = y0; y <= y1; ++y) {
         int xl, xr;
-        rowSpan(s, reach, bound, x0, x1, y, inside, xl, xr);
+        rowSpan(s, reach, solver, y, inside, xl, xr);
         if (xl <= xr)
             visitSpan(y, xl, xr);
     }
@@ -256,16 +285,17 @@ void rasterRows(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double margin, int wid
     if (conservative.x0 > conservative.x1)
         return;
     const double zero[3] = {0, 0, 0};
-    raster_detail::EdgeBound conservativeBound[3], centreBound[3];
-    raster_detail::edgeBounds(s, conservative.reach, conservativeBound);
-    raster_detail::edgeBounds(s, zero, centreBound);
+    double inverse[3];
+    raster_detail::edgeInverses(s, inverse);
+    const raster_detail::RowSolver conservativeRows(s, conservative.reach, inverse, conservative.x0, conservative.x1,
+                                                    conservative.y0);
+    const raster_detail::RowSolver centreRows(s, zero, inverse, centre.x0, centre.x1, centre.y0);
     const bool centres = centre.x0 <= centre.x1;
     for (int y = conservative.y0; y <= conservative.y1; ++y) {
         int cl, cr, zl = 0, zr = -1;
-        raster_detail::rowSpan(s, conservative.reach, conservativeBound, conservative.x0, conservative.x1, y,
-                               conservative, cl, cr);
+        raster_detail::rowSpan(s, conservative.reach, conservativeRows, y, conservative, cl, cr);
         if (centres && y >= centre.y0 && y <= centre.y1)
-            raster_detail::rowSpan(s, zero, centreBound, centre.x0, centre.x1, y, centre, zl, zr);
+            raster_detail::rowSpan(s, zero, centreRows, y, centre, zl, zr);
         if (cl <= cr || zl <= zr)
             visitRow(y, cl, cr, zl, zr);
     }
