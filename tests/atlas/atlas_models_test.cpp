@@ -89,9 +89,9 @@ TEST(AtlasModels, EverySharedModelIsCrispWithoutOverlaps) {
     ASSERT_GE(coverage.size(), 15u);
     std::printf("coverage: median %.1f%%, lowest %.1f%% over %zu models\n", 100 * pipeline::median(coverage),
                 100 * *std::min_element(coverage.begin(), coverage.end()), coverage.size());
-    // Measured 54.2% (2:1 textures, filled with one more packing); 31.7% before. The goal, 70%,
-    // is not reached.
-    EXPECT_GE(pipeline::median(coverage), 0.5);
+    // Measured 57.4% (2:1 textures, filled from the first packing's estimate, a second try after
+    // a miss); 54.2% with the fill's first aim, 31.7% before. The goal, 70%, is not reached.
+    EXPECT_GE(pipeline::median(coverage), 0.56);
 }
 
 TEST(AtlasModels, GeneratedFamiliesAreCrispWithoutOverlaps) {
