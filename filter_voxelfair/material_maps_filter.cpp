@@ -5,6 +5,7 @@
 // (before any decimation: a decimated face spans several voxels) and records the file for the
 // exporters (MaterialMapFiles, io_vxl/scene_to_meshlab.h).
 #include "filter_voxelfair_plugin.h"
+#include "map_files.h"
 
 #include "maps/house_mask.h"
 #include "maps/material_maps.h"
@@ -33,11 +34,8 @@ struct FaceArrays {
     std::vector<glm::u8vec3> colours;
     FaceValueMesh view() const {
         FaceValueMesh m;
-        m.positions = positions.data();
-        m.vertexCount = positions.size();
-        m.triangles = triangles.data();
+        static_cast<TriangleMesh &>(m) = triangleMesh(positions, triangles);
         m.wedgeUv = wedgeUv.data();
-        m.faceCount = triangles.size() / 3;
         return m;
     }
 };
@@ -76,35 +74,6 @@ PaletteKind paletteKind(CMeshO &cm) {
         return PaletteKind(0);
     auto handle = vcg::tri::Allocator<CMeshO>::FindPerMeshAttribute<int>(cm, kPaletteKindAttributeName);
     return vcg::tri::Allocator<CMeshO>::IsValidHandle(cm, handle) ? PaletteKind(handle()) : PaletteKind(0);
-}
-
-QString besideMesh(const MeshModel &m, const QString &name) {
-    if (QFileInfo(name).isAbsolute())
-        return QDir::cleanPath(name);
-    const QString meshFile = m.fullName();
-    const QDir folder = meshFile.isEmpty() ? QDir::current() : QFileInfo(meshFile).absoluteDir();
-    return QDir::cleanPath(folder.absoluteFilePath(name));
-}
-
-// "NAME_texture.png" -> "NAME<suffix>"; otherwise "<mesh name><suffix>".
-QString mapNameFor(const MeshModel &m, const QString &suffix) {
-    if (!m.cm.textures.empty()) {
-        QString base = QFileInfo(QString::fromStdString(m.cm.textures.front())).completeBaseName();
-        if (base.endsWith("_texture"))
-            base.chop(8);
-        return base + suffix;
-    }
-    const QString base = QFileInfo(m.fullName()).completeBaseName();
-    return (base.isEmpty() ? QString("voxelfair") : base) + suffix;
-}
-
-// The base colour's file: beside `mapPath` (where the pipeline writes both), else beside the mesh.
-QString baseColourPath(const MeshModel &m, const QString &mapPath) {
-    const QString name = QString::fromStdString(m.cm.textures.front());
-    QString texture = QFileInfo(name).isAbsolute() ? name : QFileInfo(mapPath).absoluteDir().absoluteFilePath(name);
-    if (!QFileInfo::exists(texture))
-        texture = besideMesh(m, name);
-    return texture;
 }
 
 }  // namespace

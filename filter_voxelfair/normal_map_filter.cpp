@@ -2,6 +2,7 @@
 // tangent-space normal map into the atlas of the current layer (its decimation, which kept the
 // atlas' UVs) by libvoxelfair/maps (normal_bake.h, MikkTSpace tangents), written as a PNG.
 #include "filter_voxelfair_plugin.h"
+#include "map_files.h"
 
 #include "maps/normal_bake.h"
 
@@ -48,26 +49,6 @@ void readBakeArrays(const CMeshO &cm, BakeArrays &out) {
     }
 }
 
-// "NAME_texture.png" -> "NAME_normal.png"; otherwise "<mesh name>_normal.png".
-QString normalNameFor(const MeshModel &m) {
-    if (!m.cm.textures.empty()) {
-        QString base = QFileInfo(QString::fromStdString(m.cm.textures.front())).completeBaseName();
-        if (base.endsWith("_texture"))
-            base.chop(8);
-        return base + "_normal.png";
-    }
-    const QString base = QFileInfo(m.fullName()).completeBaseName();
-    return (base.isEmpty() ? QString("voxelfair") : base) + "_normal.png";
-}
-
-QString besideMesh(const MeshModel &m, const QString &name) {
-    if (QFileInfo(name).isAbsolute())
-        return QDir::cleanPath(name);
-    const QString meshFile = m.fullName();
-    const QDir folder = meshFile.isEmpty() ? QDir::current() : QFileInfo(meshFile).absoluteDir();
-    return QDir::cleanPath(folder.absoluteFilePath(name));
-}
-
 // MeshLab's "Duplicate Current layer" copies faces and their quality but not user attributes: the
 // decimated copy loses io_vxl's parts (the node tree per mesh, the part per face) that io_gltf
 // writes one node per part from. Restored from the source layer it was duplicated from, and
@@ -92,7 +73,7 @@ bool restoreParts(MeshModel &target, MeshModel &source) {
 
 }  // namespace
 
-QString defaultNormalMapName(const MeshModel &m) { return normalNameFor(m); }
+QString defaultNormalMapName(const MeshModel &m) { return mapNameFor(m, "_normal.png"); }
 
 bool FilterVoxelfairPlugin::applyNormalMap(MeshDocument &md, const RichParameterList &parameters,
                                            vcg::CallBackPos *cb) {
@@ -112,7 +93,7 @@ bool FilterVoxelfairPlugin::applyNormalMap(MeshDocument &md, const RichParameter
                     "duplicating and decimating)");
 
     const QString path = besideMesh(target, parameters.getString("normalFile").trimmed().isEmpty()
-                                                ? normalNameFor(target)
+                                                ? defaultNormalMapName(target)
                                                 : parameters.getString("normalFile").trimmed());
     int width = parameters.getInt("textureSize"), height = width;
     QString sizeFrom = "given";
@@ -122,10 +103,7 @@ bool FilterVoxelfairPlugin::applyNormalMap(MeshDocument &md, const RichParameter
         // with the base colour's texel density.
         if (target.cm.textures.empty())
             return fail("Bake Normal Map: the current layer has no texture; give the texture size");
-        const QString name = QString::fromStdString(target.cm.textures.front());
-        QString texture = QFileInfo(name).isAbsolute() ? name : QFileInfo(path).absoluteDir().absoluteFilePath(name);
-        if (!QFileInfo::exists(texture))
-            texture = besideMesh(target, name);
+        const QString texture = baseColourPath(target, path);
         const QSize imageSize = QImageReader(texture).size();
         if (!imageSize.isValid())
             return fail(

@@ -36,10 +36,7 @@ FaceValueImage bakeFaceValues(const FaceValueMesh &mesh, const glm::u8vec3 *face
     }
     // The atlas' crisp bake with the values as face colours: the same texels per face.
     AtlasMesh atlasMesh;
-    atlasMesh.positions = mesh.positions;
-    atlasMesh.vertexCount = mesh.vertexCount;
-    atlasMesh.triangles = mesh.triangles;
-    atlasMesh.faceCount = mesh.faceCount;
+    static_cast<TriangleMesh &>(atlasMesh) = mesh;
     atlasMesh.faceColours = faceValues;
     AtlasLayout layout;
     layout.size = layout.width = width;

@@ -11,6 +11,8 @@
 // a size outside 1..16384 or a negative dilation.
 #pragma once
 
+#include "mesh/triangle_mesh.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -22,12 +24,8 @@
 namespace voxelfair {
 
 // A textured triangle mesh: the atlas' input arrays and its per-corner UVs (v up, [0, 1]^2).
-struct FaceValueMesh {
-    const glm::vec3 *positions = nullptr;
-    size_t vertexCount = 0;
-    const uint32_t *triangles = nullptr;  // 3 per face
-    const glm::vec2 *wedgeUv = nullptr;   // 3 per face
-    size_t faceCount = 0;
+struct FaceValueMesh : TriangleMesh {
+    const glm::vec2 *wedgeUv = nullptr;  // 3 per face
 };
 
 struct FaceValueImage {

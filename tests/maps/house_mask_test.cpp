@@ -143,7 +143,7 @@ TEST(HouseMask, BadInputIsAClearError) {
     const uint32_t triangles[3] = {0, 1, 5};
     const glm::vec2 uv[3] = {{0, 0}, {1, 0}, {0, 1}};
     const uint8_t index[1] = {20};
-    FaceValueMesh mesh{positions, 3, triangles, uv, 1};
+    FaceValueMesh mesh{{positions, 3, triangles, 1}, uv};
     EXPECT_THROW(bakeHouseMask(mesh, index, 8, 8, 2), MeshError);
     const uint32_t good[3] = {0, 1, 2};
     mesh.triangles = good;

@@ -40,8 +40,8 @@ Checked checkMaps(const Model &model, const VoxMaterialTable &materials) {
     std::vector<uint8_t> index(a.triangleCount());
     for (size_t t = 0; t < index.size(); ++t)
         index[t] = mesh.quadPaletteIndex[a.triangleQuad[t]];
-    FaceValueMesh view{mesh.positions.data(), mesh.positions.size(), a.triangles.data(), atlas.layout.wedgeUv.data(),
-                       a.triangleCount()};
+    FaceValueMesh view{{mesh.positions.data(), mesh.positions.size(), a.triangles.data(), a.triangleCount()},
+                       atlas.layout.wedgeUv.data()};
     Checked c;
     c.maps = bakeMaterialMaps(view, index.data(), a.triangleColours.data(), materials, w, h, 2);
     const MaterialMaps &m = c.maps;
@@ -171,7 +171,7 @@ TEST(MaterialMaps, BadInputIsAClearError) {
     const glm::vec3 positions[3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
     const uint32_t triangles[3] = {0, 1, 2};
     const glm::vec2 uv[3] = {{0, 0}, {1, 0}, {0, 1}};
-    const FaceValueMesh mesh{positions, 3, triangles, uv, 1};
+    const FaceValueMesh mesh{{positions, 3, triangles, 1}, uv};
     const uint8_t index[1] = {1};
     const glm::u8vec3 colour[1] = {{10, 20, 30}};
     EXPECT_THROW(bakeMaterialMaps(mesh, nullptr, colour, {}, 8, 8, 2), MeshError);
