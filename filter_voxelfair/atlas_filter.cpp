@@ -1,5 +1,6 @@
 // The texture filter: section 4.5, greedy charts, packing and a baked diffuse texture (PNG).
 #include "filter_voxelfair_plugin.h"
+#include "map_files.h"
 #include "meshlab_arrays.h"
 
 #include "atlas/texture_atlas.h"
@@ -17,57 +18,16 @@ using namespace voxelfair;
 
 namespace {
 
-// The triangles of a MeshLab mesh with their colours, as the atlas unit reads them.
-struct AtlasInput {
-    std::vector<glm::vec3> positions;
-    std::vector<uint32_t> triangles;
-    std::vector<uint32_t> faceOf;  // atlas face -> index into CMeshO::face
-    std::vector<glm::u8vec3> faceColours, vertexColours;
+// The triangles of a MeshLab mesh with their colours, and the atlas unit's view on them.
+AtlasMesh atlasMesh(const TriangleArrays &in) {
     AtlasMesh mesh;
-};
-
-void readAtlasInput(const MeshModel &m, AtlasInput &in) {
-    const CMeshO &cm = m.cm;
-    std::vector<uint32_t> arrayIndex(cm.vert.size(), 0);
-    const bool vertexColours = m.hasDataMask(MeshModel::MM_VERTCOLOR);
-    for (size_t v = 0; v < cm.vert.size(); ++v) {
-        if (cm.vert[v].IsD())
-            continue;
-        arrayIndex[v] = uint32_t(in.positions.size());
-        const auto &p = cm.vert[v].cP();
-        in.positions.emplace_back(p[0], p[1], p[2]);
-        if (vertexColours) {
-            const vcg::Color4b &c = cm.vert[v].cC();
-            in.vertexColours.emplace_back(c[0], c[1], c[2]);
-        }
-    }
-    const bool faceColours = m.hasDataMask(MeshModel::MM_FACECOLOR);
-    for (size_t f = 0; f < cm.face.size(); ++f) {
-        const CFaceO &face = cm.face[f];
-        if (face.IsD())
-            continue;
-        for (int k = 0; k < 3; ++k)
-            in.triangles.push_back(arrayIndex[vcg::tri::Index(cm, face.cV(k))]);
-        in.faceOf.push_back(uint32_t(f));
-        if (faceColours)
-            in.faceColours.emplace_back(face.cC()[0], face.cC()[1], face.cC()[2]);
-    }
-    in.mesh.positions = in.positions.data();
-    in.mesh.vertexCount = in.positions.size();
-    in.mesh.triangles = in.triangles.data();
-    in.mesh.faceCount = in.faceOf.size();
-    in.mesh.faceColours = faceColours ? in.faceColours.data() : nullptr;
-    in.mesh.vertexColours = vertexColours ? in.vertexColours.data() : nullptr;
-}
-
-// Where the PNG goes: an absolute name as given; a relative one beside the mesh's file (or in
-// the current folder for a mesh that has none).
-QString texturePath(const MeshModel &m, const QString &name) {
-    if (QFileInfo(name).isAbsolute())
-        return QDir::cleanPath(name);
-    const QString meshFile = m.fullName();
-    const QDir folder = meshFile.isEmpty() ? QDir::current() : QFileInfo(meshFile).absoluteDir();
-    return QDir::cleanPath(folder.absoluteFilePath(name));
+    mesh.positions = in.positions.data();
+    mesh.vertexCount = in.positions.size();
+    mesh.triangles = in.triangles.data();
+    mesh.faceCount = in.triangleCount();
+    mesh.faceColours = in.faceColours.empty() ? nullptr : in.faceColours.data();
+    mesh.vertexColours = in.vertexColours.empty() ? nullptr : in.vertexColours.data();
+    return mesh;
 }
 
 }  // namespace
@@ -83,8 +43,12 @@ bool FilterVoxelfairPlugin::applyTextureAtlas(MeshModel &m, const RichParameterL
     if (m.cm.fn == 0)
         return fail("Texture Atlas: the mesh has no faces");
 
-    AtlasInput input;
-    readAtlasInput(m, input);
+    TriangleArrays input;
+    TriangleFields fields;
+    fields.vertexColours = m.hasDataMask(MeshModel::MM_VERTCOLOR);
+    fields.faceColours = m.hasDataMask(MeshModel::MM_FACECOLOR);
+    readTriangleArrays(m.cm, fields, input);
+    AtlasMesh mesh = atlasMesh(input);
 
     AtlasOptions options;
     const float angle = parameters.getFloat("chartAngle");
@@ -137,7 +101,7 @@ bool FilterVoxelfairPlugin::applyTextureAtlas(MeshModel &m, const RichParameterL
             }
         }
         if (scaled)
-            input.mesh.faceTexelScale = faceScale.data();
+            mesh.faceTexelScale = faceScale.data();
     }
     const float texelsPerVoxel = parameters.getFloat("texelsPerVoxel");
     if (!(texelsPerVoxel > 0.0f))
@@ -157,7 +121,7 @@ bool FilterVoxelfairPlugin::applyTextureAtlas(MeshModel &m, const RichParameterL
         cb(10, "Building the texture atlas");
     TextureAtlas atlas;
     try {
-        atlas = buildTextureAtlas(input.mesh, options);
+        atlas = buildTextureAtlas(mesh, options);
     } catch (const Error &e) {
         return fail(QString("Texture Atlas: %1").arg(e.what()));
     }
@@ -167,7 +131,7 @@ bool FilterVoxelfairPlugin::applyTextureAtlas(MeshModel &m, const RichParameterL
     // Write the texture before touching the mesh, so a failure leaves the mesh as it was.
     if (cb)
         cb(80, "Writing the texture");
-    const QString path = texturePath(m, parameters.getString("textureFile").trimmed());
+    const QString path = besideMesh(m, parameters.getString("textureFile").trimmed());
     if (QFileInfo(path).fileName().isEmpty())
         return fail("Texture Atlas: the texture file name is empty");
     const QImage image(atlas.texture.rgba.data(), atlas.texture.width, atlas.texture.height, atlas.texture.width * 4,

@@ -6,6 +6,7 @@
 // exporters (MaterialMapFiles, io_vxl/scene_to_meshlab.h).
 #include "filter_voxelfair_plugin.h"
 #include "map_files.h"
+#include "meshlab_arrays.h"
 
 #include "maps/house_mask.h"
 #include "maps/material_maps.h"
@@ -26,46 +27,35 @@ using namespace voxelfair;
 
 namespace {
 
+// The layer's triangles with the atlas' UVs, each face's palette index (io_vxl's attribute) and
+// colour (white where the mesh has none).
 struct FaceArrays {
-    std::vector<glm::vec3> positions;
-    std::vector<uint32_t> triangles;
-    std::vector<glm::vec2> wedgeUv;
+    TriangleArrays triangles;
     std::vector<uint8_t> paletteIndex;
-    std::vector<glm::u8vec3> colours;
     FaceValueMesh view() const {
         FaceValueMesh m;
-        static_cast<TriangleMesh &>(m) = triangleMesh(positions, triangles);
-        m.wedgeUv = wedgeUv.data();
+        static_cast<TriangleMesh &>(m) = triangleMesh(triangles.positions, triangles.triangles);
+        m.wedgeUv = triangles.wedgeUv.data();
         return m;
     }
 };
 
 // False when the mesh has no palette index per face (not imported by io_vxl).
-bool readFaceArrays(CMeshO &cm, FaceArrays &out) {
+bool readFaceArrays(MeshModel &m, FaceArrays &out) {
+    CMeshO &cm = m.cm;
     if (!vcg::tri::HasPerFaceAttribute(cm, kPaletteIndexAttributeName))
         return false;
     auto index = vcg::tri::Allocator<CMeshO>::FindPerFaceAttribute<uint8_t>(cm, kPaletteIndexAttributeName);
     if (!vcg::tri::Allocator<CMeshO>::IsValidHandle(cm, index))
         return false;
-    std::vector<uint32_t> arrayIndex(cm.vert.size(), 0);
-    for (size_t v = 0; v < cm.vert.size(); ++v) {
-        if (cm.vert[v].IsD())
-            continue;
-        arrayIndex[v] = uint32_t(out.positions.size());
-        const auto &p = cm.vert[v].cP();
-        out.positions.emplace_back(p[0], p[1], p[2]);
-    }
-    const bool colours = cm.face.IsColorEnabled();
-    for (CFaceO &face : cm.face) {
-        if (face.IsD())
-            continue;
-        for (int k = 0; k < 3; ++k) {
-            out.triangles.push_back(arrayIndex[vcg::tri::Index(cm, face.cV(k))]);
-            out.wedgeUv.emplace_back(face.cWT(k).U(), face.cWT(k).V());
-        }
-        out.paletteIndex.push_back(index[&face]);
-        out.colours.push_back(colours ? glm::u8vec3(face.cC()[0], face.cC()[1], face.cC()[2]) : glm::u8vec3(255));
-    }
+    TriangleFields fields;
+    fields.wedgeUv = true;
+    fields.faceColours = m.hasDataMask(MeshModel::MM_FACECOLOR);
+    readTriangleArrays(cm, fields, out.triangles);
+    if (out.triangles.faceColours.empty())
+        out.triangles.faceColours.assign(out.triangles.triangleCount(), glm::u8vec3(255));
+    for (const uint32_t f : out.triangles.faceOf)
+        out.paletteIndex.push_back(index[f]);
     return true;
 }
 
@@ -89,7 +79,7 @@ bool FilterVoxelfairPlugin::applyHouseMask(MeshModel &m, const RichParameterList
     if (!m.hasDataMask(MeshModel::MM_WEDGTEXCOORD) || m.cm.textures.empty())
         return fail("Bake House Colour Mask: the mesh has no texture atlas; run Voxel Texture Atlas first");
     FaceArrays arrays;
-    if (!readFaceArrays(m.cm, arrays))
+    if (!readFaceArrays(m, arrays))
         return fail("Bake House Colour Mask: the mesh has no voxel palette index per face; import the model with "
                     "voxelfair's VXL importer (and bake before duplicating or decimating)");
     if (paletteKind(m.cm) != PaletteKind::Westwood)
@@ -140,7 +130,7 @@ bool FilterVoxelfairPlugin::applyMaterialMaps(MeshModel &m, const RichParameterL
         return fail("Bake Material Maps: the mesh has no texture atlas; run Voxel Texture Atlas first");
     FaceArrays arrays;
     const VoxMaterialTable *materials = findVoxMaterials(m.cm);
-    if (!readFaceArrays(m.cm, arrays) || materials == nullptr || paletteKind(m.cm) != PaletteKind::MagicaVoxel)
+    if (!readFaceArrays(m, arrays) || materials == nullptr || paletteKind(m.cm) != PaletteKind::MagicaVoxel)
         return fail("Bake Material Maps: the mesh has no MagicaVoxel materials per face; import a .vox with "
                     "voxelfair's importer (and bake before duplicating or decimating)");
 
@@ -157,8 +147,9 @@ bool FilterVoxelfairPlugin::applyMaterialMaps(MeshModel &m, const RichParameterL
         return fail(QString("Bake Material Maps: could not read the size of the base colour texture %1").arg(texture));
     if (cb)
         cb(10, "Baking the material maps");
-    const MaterialMaps maps = bakeMaterialMaps(arrays.view(), arrays.paletteIndex.data(), arrays.colours.data(),
-                                               *materials, size.width(), size.height(), parameters.getInt("dilation"));
+    const MaterialMaps maps =
+        bakeMaterialMaps(arrays.view(), arrays.paletteIndex.data(), arrays.triangles.faceColours.data(), *materials,
+                         size.width(), size.height(), parameters.getInt("dilation"));
     if (cb)
         cb(80, "Writing the material maps");
     // Stale maps of an earlier bake would be taken for this one's.

@@ -263,4 +263,32 @@ std::vector<PartArrays> splitByPart(const PolygonArrays &arrays, const CMeshO &m
     return parts;
 }
 
+void readTriangleArrays(const CMeshO &mesh, TriangleFields fields, TriangleArrays &out) {
+    std::vector<uint32_t> arrayIndex(mesh.vert.size(), 0);
+    for (size_t v = 0; v < mesh.vert.size(); ++v) {
+        const CVertexO &vert = mesh.vert[v];
+        if (vert.IsD())
+            continue;
+        arrayIndex[v] = uint32_t(out.positions.size());
+        out.positions.emplace_back(vert.cP()[0], vert.cP()[1], vert.cP()[2]);
+        if (fields.normals)
+            out.normals.emplace_back(vert.cN()[0], vert.cN()[1], vert.cN()[2]);
+        if (fields.vertexColours)
+            out.vertexColours.emplace_back(vert.cC()[0], vert.cC()[1], vert.cC()[2]);
+    }
+    for (size_t f = 0; f < mesh.face.size(); ++f) {
+        const CFaceO &face = mesh.face[f];
+        if (face.IsD())
+            continue;
+        for (int k = 0; k < 3; ++k) {
+            out.triangles.push_back(arrayIndex[vcg::tri::Index(mesh, face.cV(k))]);
+            if (fields.wedgeUv)
+                out.wedgeUv.emplace_back(face.cWT(k).U(), face.cWT(k).V());
+        }
+        out.faceOf.push_back(uint32_t(f));
+        if (fields.faceColours)
+            out.faceColours.emplace_back(face.cC()[0], face.cC()[1], face.cC()[2]);
+    }
+}
+
 }  // namespace voxelfair

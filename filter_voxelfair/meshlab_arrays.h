@@ -6,7 +6,9 @@
 #include <cstdint>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/gtc/type_precision.hpp>
 
 namespace voxelfair {
 
@@ -51,6 +53,28 @@ struct PartArrays {
 // scaled differently (an HVA frame can shrink a section to 1%), so each needs its own voxel
 // size. Returns nothing when the mesh has no such attribute or only one part.
 std::vector<PartArrays> splitByPart(const PolygonArrays &arrays, const CMeshO &mesh);
+
+// The live triangles of a MeshLab mesh as the host-free units read them (the atlas, the bakes):
+// live vertices renumbered from 0, 3 indices per triangle, and per triangle the CMeshO face it
+// came from. The optional fields are read when asked for: ask for colours only where the mesh
+// has them (MeshModel::hasDataMask(MM_VERTCOLOR / MM_FACECOLOR)).
+struct TriangleArrays {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;          // per vertex (TriangleFields::normals)
+    std::vector<glm::u8vec3> vertexColours;  // per vertex (TriangleFields::vertexColours)
+    std::vector<uint32_t> triangles;
+    std::vector<uint32_t> faceOf;          // triangle -> index into CMeshO::face
+    std::vector<glm::vec2> wedgeUv;        // 3 per triangle (TriangleFields::wedgeUv)
+    std::vector<glm::u8vec3> faceColours;  // per triangle (TriangleFields::faceColours)
+
+    size_t triangleCount() const { return faceOf.size(); }
+};
+
+struct TriangleFields {
+    bool normals = false, vertexColours = false, wedgeUv = false, faceColours = false;
+};
+
+void readTriangleArrays(const CMeshO &mesh, TriangleFields fields, TriangleArrays &out);
 
 // Per CMeshO face, its part number ("voxelfair_part"); empty when the mesh has no such attribute.
 std::vector<int> facePartNumbers(const CMeshO &mesh);

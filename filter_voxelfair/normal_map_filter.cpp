@@ -3,6 +3,7 @@
 // atlas' UVs) by libvoxelfair/maps (normal_bake.h, MikkTSpace tangents), written as a PNG.
 #include "filter_voxelfair_plugin.h"
 #include "map_files.h"
+#include "meshlab_arrays.h"
 
 #include "maps/normal_bake.h"
 
@@ -21,32 +22,12 @@ using namespace voxelfair;
 
 namespace {
 
-struct BakeArrays {
-    std::vector<glm::vec3> positions, normals;
-    std::vector<uint32_t> triangles;
-    std::vector<glm::vec2> wedgeUv;
-    NormalBakeMesh view() const { return normalBakeMesh(positions, normals, triangles, wedgeUv); }
-};
-
-void readBakeArrays(const CMeshO &cm, BakeArrays &out) {
-    std::vector<uint32_t> index(cm.vert.size(), 0);
-    for (size_t v = 0; v < cm.vert.size(); ++v) {
-        if (cm.vert[v].IsD())
-            continue;
-        index[v] = uint32_t(out.positions.size());
-        const auto &p = cm.vert[v].cP();
-        const auto &n = cm.vert[v].cN();
-        out.positions.emplace_back(p[0], p[1], p[2]);
-        out.normals.emplace_back(n[0], n[1], n[2]);
-    }
-    for (const CFaceO &face : cm.face) {
-        if (face.IsD())
-            continue;
-        for (int k = 0; k < 3; ++k) {
-            out.triangles.push_back(index[vcg::tri::Index(cm, face.cV(k))]);
-            out.wedgeUv.emplace_back(face.cWT(k).U(), face.cWT(k).V());
-        }
-    }
+// The layer's triangles with vertex normals and the atlas' UVs, and the bake's view on them.
+NormalBakeMesh readBakeMesh(const CMeshO &cm, TriangleArrays &arrays) {
+    TriangleFields fields;
+    fields.normals = fields.wedgeUv = true;
+    readTriangleArrays(cm, fields, arrays);
+    return normalBakeMesh(arrays.positions, arrays.normals, arrays.triangles, arrays.wedgeUv);
 }
 
 // MeshLab's "Duplicate Current layer" copies faces and their quality but not user attributes: the
@@ -114,9 +95,8 @@ bool FilterVoxelfairPlugin::applyNormalMap(MeshDocument &md, const RichParameter
         sizeFrom = QFileInfo(texture).fileName();
     }
 
-    BakeArrays low, high;
-    readBakeArrays(target.cm, low);
-    readBakeArrays(source->cm, high);
+    TriangleArrays lowArrays, highArrays;
+    const NormalBakeMesh low = readBakeMesh(target.cm, lowArrays), high = readBakeMesh(source->cm, highArrays);
     NormalBakeOptions options;
     options.width = width;
     options.height = height;
@@ -125,7 +105,7 @@ bool FilterVoxelfairPlugin::applyNormalMap(MeshDocument &md, const RichParameter
         cb(10, "Baking the normal map");
     NormalMap map;
     try {
-        map = bakeNormalMap(high.view(), low.view(), options);
+        map = bakeNormalMap(high, low, options);
     } catch (const Error &e) {
         return fail(QString("Bake Normal Map: %1").arg(e.what()));
     }

@@ -5,9 +5,8 @@
 // every other face, and the base colour there keeps the palette's own colour.
 #include "maps/house_mask.h"
 
-#include "atlas/texel_raster.h"
 #include "base/error.h"
-#include "pipeline/pipeline_stages.h"
+#include "pipeline/face_value_runs.h"
 #include "shapes/analytic_shapes.h"
 
 #include <gtest/gtest.h>
@@ -30,46 +29,25 @@ struct Checked {
 };
 
 Checked checkMask(const Model &model) {
-    QuadMesh mesh = extract(model.scene);
-    fair(mesh);
-    const Attributes a = smoothAttributes(mesh);
-    const TextureAtlas atlas = buildAtlas(mesh, a);
-    const AtlasTexture &base = atlas.texture;
-    std::vector<uint8_t> faceIndex(a.triangleCount());
-    for (size_t t = 0; t < faceIndex.size(); ++t)
-        faceIndex[t] = mesh.quadPaletteIndex[a.triangleQuad[t]];
-    FaceValueMesh view;
-    view.positions = mesh.positions.data();
-    view.vertexCount = mesh.positions.size();
-    view.triangles = a.triangles.data();
-    view.wedgeUv = atlas.layout.wedgeUv.data();
-    view.faceCount = a.triangleCount();
-    const HouseMask mask = bakeHouseMask(view, faceIndex.data(), base.width, base.height, 2);
+    const FaceValueRun run = faceValueRun(model);
+    const AtlasTexture &base = run.atlas.texture;
+    const FaceValueMesh view = run.view();
+    const HouseMask mask = bakeHouseMask(view, run.paletteIndex.data(), base.width, base.height, 2);
     EXPECT_EQ(mask.width, base.width);
     EXPECT_EQ(mask.height, base.height);
 
     Checked out;
     out.houseFaces = mask.houseFaces;
-    const glm::dvec2 extent(base.width, base.height);
-    for (size_t f = 0; f < view.faceCount; ++f) {
-        glm::dvec2 q[3], points[4];
-        for (int k = 0; k < 3; ++k)
-            q[k] = glm::dvec2(atlas.layout.wedgeUv[3 * f + size_t(k)]) * extent;
-        if (!(faceInteriorPoints(q, points) > 0))
-            continue;
-        const bool house = isRemapIndex(faceIndex[f]);
-        const Rgb colour = model.scene.palette.colours[faceIndex[f]];
-        for (const glm::dvec2 &p : points) {
-            const int x = std::clamp(int(std::floor(p.x)), 0, base.width - 1);
-            const int y = std::clamp(int(std::floor(p.y)), 0, base.height - 1);
-            ++out.samples;
-            if (mask.texel(x, y) != (house ? 255 : 0))
-                ++out.wrong;
-            const glm::u8vec4 c = base.texel(x, y);
-            if (c.r != colour.r || c.g != colour.g || c.b != colour.b)
-                ++out.wrongColour;
-        }
-    }
+    forEachInteriorTexel(view.wedgeUv, view.faceCount, base.width, base.height, [&](size_t f, int x, int y) {
+        const bool house = isRemapIndex(run.paletteIndex[f]);
+        const Rgb colour = model.scene.palette.colours[run.paletteIndex[f]];
+        ++out.samples;
+        if (mask.texel(x, y) != (house ? 255 : 0))
+            ++out.wrong;
+        const glm::u8vec4 c = base.texel(x, y);
+        if (c.r != colour.r || c.g != colour.g || c.b != colour.b)
+            ++out.wrongColour;
+    });
     return out;
 }
 

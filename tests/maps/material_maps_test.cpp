@@ -4,9 +4,8 @@
 // shared files with materials (robo.vox's emitter, test-transform.vox's glass and blend).
 #include "maps/material_maps.h"
 
-#include "atlas/texel_raster.h"
 #include "base/error.h"
-#include "pipeline/pipeline_stages.h"
+#include "pipeline/face_value_runs.h"
 #include "shapes/analytic_shapes.h"
 
 #include <gtest/gtest.h>
@@ -32,48 +31,33 @@ struct Checked {
 };
 
 Checked checkMaps(const Model &model, const VoxMaterialTable &materials) {
-    QuadMesh mesh = extract(model.scene);
-    fair(mesh);
-    const Attributes a = smoothAttributes(mesh);
-    const TextureAtlas atlas = buildAtlas(mesh, a);
-    const int w = atlas.texture.width, h = atlas.texture.height;
-    std::vector<uint8_t> index(a.triangleCount());
-    for (size_t t = 0; t < index.size(); ++t)
-        index[t] = mesh.quadPaletteIndex[a.triangleQuad[t]];
-    FaceValueMesh view{{mesh.positions.data(), mesh.positions.size(), a.triangles.data(), a.triangleCount()},
-                       atlas.layout.wedgeUv.data()};
+    const FaceValueRun run = faceValueRun(model);
+    const int w = run.atlas.texture.width, h = run.atlas.texture.height;
+    const std::vector<glm::u8vec3> &colours = run.attributes.triangleColours;
+    const FaceValueMesh view = run.view();
     Checked c;
-    c.maps = bakeMaterialMaps(view, index.data(), a.triangleColours.data(), materials, w, h, 2);
+    c.maps = bakeMaterialMaps(view, run.paletteIndex.data(), colours.data(), materials, w, h, 2);
     const MaterialMaps &m = c.maps;
     const auto at = [&](const std::vector<uint8_t> &image, int channels, int x, int y, int k) {
         return image[(size_t(h - 1 - y) * size_t(w) + size_t(x)) * size_t(channels) + size_t(k)];
     };
-    const glm::dvec2 extent(w, h);
-    for (size_t f = 0; f < view.faceCount; ++f) {
-        glm::dvec2 q[3], points[4];
-        for (int k = 0; k < 3; ++k)
-            q[k] = glm::dvec2(atlas.layout.wedgeUv[3 * f + size_t(k)]) * extent;
-        if (!(faceInteriorPoints(q, points) > 0))
-            continue;
-        const PbrVoxel p = pbrOf(materials.byIndex[index[f]]);
-        const glm::u8vec3 colour = a.triangleColours[f];
-        for (const glm::dvec2 &pt : points) {
-            const int x = std::clamp(int(std::floor(pt.x)), 0, w - 1), y = std::clamp(int(std::floor(pt.y)), 0, h - 1);
-            ++c.samples;
-            if (!m.metallicRoughness.empty() && (at(m.metallicRoughness, 3, x, y, 1) != unorm(p.roughness) ||
-                                                 at(m.metallicRoughness, 3, x, y, 2) != unorm(p.metallic)))
-                ++c.wrongMetalRough;
-            if (!m.emissive.empty())
-                for (int k = 0; k < 3; ++k) {  // decoded as a renderer does: linear colour * strength
-                    const float emitted = linear(at(m.emissive, 3, x, y, k) / 255.0f) * m.emissiveStrength;
-                    const float expected = linear(colour[k] / 255.0f) * p.emission;
-                    if (std::abs(emitted - expected) > 0.01f * std::max(1.0f, m.emissiveStrength))
-                        ++c.wrongEmissive;
-                }
-            if (!m.transmission.empty() && at(m.transmission, 1, x, y, 0) != unorm(p.transmission))
-                ++c.wrongTransmission;
-        }
-    }
+    forEachInteriorTexel(view.wedgeUv, view.faceCount, w, h, [&](size_t f, int x, int y) {
+        const PbrVoxel p = pbrOf(materials.byIndex[run.paletteIndex[f]]);
+        const glm::u8vec3 colour = colours[f];
+        ++c.samples;
+        if (!m.metallicRoughness.empty() && (at(m.metallicRoughness, 3, x, y, 1) != unorm(p.roughness) ||
+                                             at(m.metallicRoughness, 3, x, y, 2) != unorm(p.metallic)))
+            ++c.wrongMetalRough;
+        if (!m.emissive.empty())
+            for (int k = 0; k < 3; ++k) {  // decoded as a renderer does: linear colour * strength
+                const float emitted = linear(at(m.emissive, 3, x, y, k) / 255.0f) * m.emissiveStrength;
+                const float expected = linear(colour[k] / 255.0f) * p.emission;
+                if (std::abs(emitted - expected) > 0.01f * std::max(1.0f, m.emissiveStrength))
+                    ++c.wrongEmissive;
+            }
+        if (!m.transmission.empty() && at(m.transmission, 1, x, y, 0) != unorm(p.transmission))
+            ++c.wrongTransmission;
+    });
     return c;
 }
 
