@@ -38,27 +38,10 @@ TEST(HostileHva, RealFileTruncatedAtEveryByte) {
 
 TEST(HostileHva, RandomBitFlips) {
     SweepRecord record;
+    // Every other variant flips only the section and frame counts; the rest mostly matrix floats.
     const auto sweep = [&](const Bytes &base, uint32_t seed, int variants) {
-        std::mt19937 rng(seed);
-        std::uniform_int_distribution<int> flips(1, 8);
-        for (int i = 0; i < variants; ++i) {
-            // Half the variants flip only the counts, the rest anywhere (mostly matrix floats).
-            Bytes b = base;
-            if (i % 2 == 0) {
-                b = flipBits(std::move(b), rng, flips(rng));
-            } else {
-                Bytes counts(b.begin() + 16, b.begin() + 24);
-                counts = flipBits(std::move(counts), rng, 1 + i % 3);
-                std::copy(counts.begin(), counts.end(), b.begin() + 16);
-            }
-            const Attempt a = attempt(readOnly, b);
-            record.add(a);
-            ASSERT_TRUE(survived(a, kHvaHeap, b.size())) << "seed " << seed << ", variant " << i;
-            if (!a.accepted) {
-                ASSERT_TRUE(
-                    rejectedWithAnyOf(a, {"does not match", "no frames", "no sections", "not a finite number"}));
-            }
-        }
+        sweepBitFlips(readOnly, base, {seed, variants, 8, {{16, 24}}}, kHvaHeap, record,
+                      {"does not match", "no frames", "no sections", "not a finite number"});
     };
     sweep(fixtureFile(), 11, 2000);
     const Bytes hmec = loadModel("vxl/hmec.hva");

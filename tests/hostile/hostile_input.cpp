@@ -106,6 +106,44 @@ Bytes flipBits(Bytes bytes, std::mt19937 &rng, int flips) {
     return bytes;
 }
 
+void sweepBitFlips(Reader read, const Bytes &base, const BitFlipSweep &sweep, const HeapBound &bound,
+                   SweepRecord &record, std::initializer_list<const char *> rejectedAnyOf) {
+    const auto bitsOf = [&](const ByteRange &r) {
+        const size_t end = std::min(r.end, base.size());
+        return r.begin < end ? 8 * (end - r.begin) : size_t(0);
+    };
+    size_t focusBits = 0;
+    for (const ByteRange &r : sweep.focus)
+        focusBits += bitsOf(r);
+    std::mt19937 rng(sweep.seed);
+    std::uniform_int_distribution<int> flips(1, sweep.maxFlips);
+    for (int i = 0; i < sweep.variants; ++i) {
+        Bytes b = base;
+        if (i % 2 == 1 && focusBits > 0) {
+            std::uniform_int_distribution<size_t> bit(0, focusBits - 1);
+            for (int f = flips(rng); f > 0; --f) {
+                size_t k = bit(rng);
+                for (const ByteRange &r : sweep.focus) {
+                    const size_t bits = bitsOf(r);
+                    if (k < bits) {
+                        b[r.begin + k / 8] ^= uint8_t(1u << (k % 8));
+                        break;
+                    }
+                    k -= bits;
+                }
+            }
+        } else {
+            b = flipBits(std::move(b), rng, flips(rng));
+        }
+        const Attempt a = attempt(read, b);
+        record.add(a);
+        ASSERT_TRUE(survived(a, bound, b.size())) << "seed " << sweep.seed << ", variant " << i;
+        if (!a.accepted && rejectedAnyOf.size() > 0) {
+            ASSERT_TRUE(rejectedWithAnyOf(a, rejectedAnyOf)) << "seed " << sweep.seed << ", variant " << i;
+        }
+    }
+}
+
 void patch32(Bytes &bytes, size_t offset, uint32_t value) {
     for (int i = 0; i < 4; ++i)
         bytes.at(offset + size_t(i)) = uint8_t(value >> (8 * i));

@@ -70,6 +70,24 @@ struct SweepRecord {
 void sweepTruncations(Reader read, const Bytes &file, const HeapBound &bound, std::initializer_list<const char *> anyOf,
                       const char *what);
 
+// Bit-flipped variants of a file, from a fixed seed: each variant inverts 1..maxFlips random bits,
+// every other one only within `focus` (where a format's offsets, counts and sizes are; flips in
+// the payload mostly change colours), the rest anywhere (all of them when `focus` is empty).
+struct ByteRange {
+    size_t begin, end;
+};
+struct BitFlipSweep {
+    uint32_t seed = 1;
+    int variants = 1000;
+    int maxFlips = 8;
+    std::vector<ByteRange> focus;
+};
+
+// Each variant must survive within `bound`; when `rejectedAnyOf` is not empty, a rejection must
+// name one of its parts. Adds every attempt to `record`.
+void sweepBitFlips(Reader read, const Bytes &base, const BitFlipSweep &sweep, const HeapBound &bound,
+                   SweepRecord &record, std::initializer_list<const char *> rejectedAnyOf = {});
+
 // A file of the shared models folder (VOXELFAIR_MODELS_DIR), or empty when it is absent; tests
 // then skip with a message naming the folder.
 std::filesystem::path modelsDir();

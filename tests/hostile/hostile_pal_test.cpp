@@ -41,17 +41,7 @@ TEST(HostilePal, RealFileTruncatedAtEveryByte) {
 TEST(HostilePal, RandomBitFlips) {
     SweepRecord record;
     const auto sweep = [&](const Bytes &base, uint32_t seed, int variants, const char *expected) {
-        std::mt19937 rng(seed);
-        std::uniform_int_distribution<int> flips(1, 4);
-        for (int i = 0; i < variants; ++i) {
-            const Bytes b = flipBits(base, rng, flips(rng));
-            const Attempt a = attempt(readOnly, b);
-            record.add(a);
-            ASSERT_TRUE(survived(a, kPalHeap, b.size())) << "seed " << seed << ", variant " << i;
-            if (!a.accepted) {
-                ASSERT_TRUE(rejectedWithAnyOf(a, {expected, "not a palette"}));
-            }
-        }
+        sweepBitFlips(readOnly, base, {seed, variants, 4, {}}, kPalHeap, record, {expected, "not a palette"});
     };
     const Bytes pal = loadModel("pal/ts_unittem.pal");
     if (!pal.empty())

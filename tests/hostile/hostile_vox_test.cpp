@@ -101,27 +101,12 @@ TEST(HostileVox, RealFileTruncatedAtEveryByte) {
 
 TEST(HostileVox, RandomBitFlips) {
     SweepRecord record;
+    // Every other variant flips bits in chunk headers only (ids and sizes), the rest anywhere.
     const auto sweep = [&](const Bytes &base, uint32_t seed, int variants) {
-        // Half the variants flip bits in chunk headers only (ids and sizes), the rest anywhere.
-        std::vector<size_t> headerBytes;
+        BitFlipSweep flips{seed, variants, 8, {}};
         for (const ChunkAt &c : chunksOf(base))
-            for (size_t i = 0; i < 12; ++i)
-                headerBytes.push_back(c.offset + i);
-        std::mt19937 rng(seed);
-        std::uniform_int_distribution<int> flips(1, 8);
-        std::uniform_int_distribution<size_t> header(0, headerBytes.size() - 1);
-        for (int i = 0; i < variants; ++i) {
-            Bytes b = base;
-            if (i % 2 == 0) {
-                b = flipBits(std::move(b), rng, flips(rng));
-            } else {
-                for (int f = flips(rng); f > 0; --f)
-                    b[headerBytes[header(rng)]] ^= uint8_t(1u << (rng() % 8));
-            }
-            const Attempt a = attempt(readAndPlace, b);
-            record.add(a);
-            ASSERT_TRUE(survived(a, kVoxPlaceHeap, b.size())) << "seed " << seed << ", variant " << i;
-        }
+            flips.focus.push_back({c.offset, c.offset + 12});
+        sweepBitFlips(readAndPlace, base, flips, kVoxPlaceHeap, record);
     };
     sweep(fixtureFile(), 31, 3000);
     const Bytes robo = loadModel("vox/robo.vox"), ontop = loadModel("vox/8ontop.vox");
