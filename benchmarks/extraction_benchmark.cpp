@@ -36,15 +36,6 @@ void extract(benchmark::State &state, const std::vector<VoxelVolume> &volumes) {
     state.counters["vertices"] = double(vertices);
 }
 
-DenseGrid shell(int side, int wall) {
-    DenseGrid g = box(side, side, side);
-    for (int z = wall; z < side - wall; ++z)
-        for (int y = wall; y < side - wall; ++y)
-            for (int x = wall; x < side - wall; ++x)
-                g.set(x, y, z, false);
-    return g;
-}
-
 // Overlapping balls along a random walk until 64k voxels: a lumpy organic shape.
 DenseGrid blob(size_t targetVoxels) {
     const int side = 64;
@@ -73,7 +64,7 @@ DenseGrid blob(size_t targetVoxels) {
 void BM_Sphere24(benchmark::State &state) { extract(state, {sphere(24).toVolume()}); }
 void BM_Box40(benchmark::State &state) { extract(state, {box(40, 40, 40).toVolume()}); }
 // A VXL-like hull: 40^3 with 3-voxel walls around a cavity the fill closes.
-void BM_Shell40(benchmark::State &state) { extract(state, {shell(40, 3).toVolume()}); }
+void BM_Shell40(benchmark::State &state) { extract(state, {hollowBox(40, 3).toVolume()}); }
 void BM_Blob64k(benchmark::State &state) { extract(state, {blob(64000).toVolume()}); }
 // Worst case: independent random voxels (58% of 48^3), full of edge and corner contacts.
 void BM_RandomNoise64k(benchmark::State &state) { extract(state, {randomGrid(48, 48, 48, 0.58, 1).toVolume()}); }

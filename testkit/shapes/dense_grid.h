@@ -61,6 +61,17 @@ inline DenseGrid box(int sx, int sy, int sz) {
     return g;
 }
 
+// A cube of side `side` whose inside (all but `wall` voxels from each face) is empty: a closed
+// cavity.
+inline DenseGrid hollowBox(int side, int wall = 1) {
+    DenseGrid g = box(side, side, side);
+    for (int z = wall; z < side - wall; ++z)
+        for (int y = wall; y < side - wall; ++y)
+            for (int x = wall; x < side - wall; ++x)
+                g.set(x, y, z, false);
+    return g;
+}
+
 // Voxels whose centre lies within `radius` of the grid centre, with `margin` empty voxels around.
 inline DenseGrid sphere(int radius, int margin = 0) {
     const int side = 2 * radius + 1 + 2 * margin;

@@ -4,6 +4,7 @@
 // faces; the material, sampler and embedded PNG are as the options say; animations sample every
 // frame.
 #include "export/glb_writer.h"
+#include "fixtures/glb_reader.h"
 
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
@@ -19,17 +20,10 @@ using namespace voxelfair;
 namespace {
 
 tinygltf::Model load(const std::vector<uint8_t> &glb) {
-    tinygltf::Model model;
-    tinygltf::TinyGLTF loader;
-    // The image bytes are compared as they are; no decoding.
-    loader.SetImageLoader([](tinygltf::Image *, const int, std::string *, std::string *, int, int,
-                             const unsigned char *, int, void *) { return true; },
-                          nullptr);
-    std::string error, warning;
-    const bool ok = loader.LoadBinaryFromMemory(&model, &error, &warning, glb.data(), unsigned(glb.size()));
-    EXPECT_TRUE(ok) << error;
-    EXPECT_TRUE(warning.empty()) << warning;
-    return model;
+    fixtures::GlbRead r = fixtures::readGlb(glb);
+    EXPECT_TRUE(r.ok) << r.error;
+    EXPECT_TRUE(r.warning.empty()) << r.warning;
+    return std::move(r.model);
 }
 
 glm::mat4 localMatrix(const tinygltf::Node &n) {

@@ -200,15 +200,6 @@ DenseGrid withVoxels(int sx, int sy, int sz, std::initializer_list<std::array<in
     return g;
 }
 
-DenseGrid hollowBox(int side) {
-    DenseGrid g = box(side, side, side);
-    for (int z = 1; z < side - 1; ++z)
-        for (int y = 1; y < side - 1; ++y)
-            for (int x = 1; x < side - 1; ++x)
-                g.set(x, y, z, false);
-    return g;
-}
-
 // A square ring around the z axis: `side` x `side` x `height` with a `hole` x `hole` hole.
 DenseGrid ring(int side, int hole, int height) {
     DenseGrid g = box(side, side, height);

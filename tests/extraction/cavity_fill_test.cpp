@@ -12,15 +12,6 @@ namespace {
 
 constexpr Voxel kFill{200, 7};
 
-DenseGrid hollowBox(int side, int wall = 1) {
-    DenseGrid g = box(side, side, side);
-    for (int z = wall; z < side - wall; ++z)
-        for (int y = wall; y < side - wall; ++y)
-            for (int x = wall; x < side - wall; ++x)
-                g.set(x, y, z, false);
-    return g;
-}
-
 // The run layout the builder guarantees: sorted, disjoint, non-touching runs; contiguous voxels.
 void expectWellFormed(const VoxelVolume &v) {
     ASSERT_EQ(v.columnFirstRun.size(), size_t(v.sizeX) * v.sizeY + 1);

@@ -11,6 +11,7 @@
 #include "formats/hva.h"
 #include "formats/vxl.h"
 #include "scene/unit_scene.h"
+#include "fixtures/glb_reader.h"
 
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
@@ -58,14 +59,9 @@ void expectValid(const std::vector<std::string> &glbs) {
 }
 
 tinygltf::Model loadGlb(const std::string &path) {
-    tinygltf::Model model;
-    tinygltf::TinyGLTF loader;
-    loader.SetImageLoader([](tinygltf::Image *, const int, std::string *, std::string *, int, int,
-                             const unsigned char *, int, void *) { return true; },
-                          nullptr);
-    std::string error, warning;
-    EXPECT_TRUE(loader.LoadBinaryFromFile(&model, &error, &warning, path)) << error;
-    return model;
+    fixtures::GlbRead r = fixtures::readGlbFile(path);
+    EXPECT_TRUE(r.ok) << path << ": " << r.error;
+    return std::move(r.model);
 }
 
 const tinygltf::Node *findNode(const tinygltf::Model &model, const std::string &name) {

@@ -1,6 +1,7 @@
 // Broken .vox files: each gives a FormatError saying what and where; no prefix or corrupted byte of
 // a valid file crashes the reader.
 #include "fixtures/vox_writer.h"
+#include "vox_expect_error.h"
 #include "formats/format_error.h"
 #include "formats/vox.h"
 #include "scene/vox_scene.h"
@@ -11,20 +12,10 @@
 #include <string>
 
 using namespace voxelfair;
+using namespace voxelfair::test;
 using namespace voxelfair::fixtures;
 
 namespace {
-
-// Reads `bytes` and expects a FormatError whose message contains each of `parts`.
-void expectError(const Bytes &bytes, std::initializer_list<std::string> parts) {
-    try {
-        readVox(bytes.data(), bytes.size());
-        ADD_FAILURE() << "no error; expected one containing \"" << *parts.begin() << "\"";
-    } catch (const FormatError &e) {
-        for (const std::string &part : parts)
-            EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
-    }
-}
 
 // A valid file with one 1x1x1 model, then `graph` (root nTRN 0 -> nGRP 1 -> ...).
 Bytes withGraph(const std::function<void(VoxWriter &)> &graph) {
@@ -43,27 +34,27 @@ Bytes header(int version) { return VoxContent().raw({'V', 'O', 'X', ' '}).i32(ve
 }  // namespace
 
 TEST(VoxErrors, WrongMagic) {
-    expectError({'V', 'X', 'L', ' ', 150, 0, 0, 0}, {"not a MagicaVoxel file"});
-    expectError({'V', 'O', 'X'}, {"truncated", "8-byte header"});
-    expectError({}, {"truncated"});
+    expectVoxError({'V', 'X', 'L', ' ', 150, 0, 0, 0}, {"not a MagicaVoxel file"});
+    expectVoxError({'V', 'O', 'X'}, {"truncated", "8-byte header"});
+    expectVoxError({}, {"truncated"});
 }
 
 TEST(VoxErrors, UnsupportedVersion) {
-    expectError(VoxWriter().model(1, 1, 1, {}).bytes(151), {"unsupported version 151"});
+    expectVoxError(VoxWriter().model(1, 1, 1, {}).bytes(151), {"unsupported version 151"});
 }
 
 TEST(VoxErrors, FirstChunkIsNotMain) {
     Bytes b = header(150);
     const Bytes size = voxChunk("SIZE", VoxContent().i32(1).i32(1).i32(1).bytes());
     b.insert(b.end(), size.begin(), size.end());
-    expectError(b, {"chunk 'SIZE' at byte 8", "must be 'MAIN'"});
+    expectVoxError(b, {"chunk 'SIZE' at byte 8", "must be 'MAIN'"});
 }
 
 TEST(VoxErrors, MainPastTheEndOfTheFile) {
     Bytes b = VoxWriter().model(1, 1, 1, {{0, 0, 0, 1}}).bytes();
     b.resize(b.size() - 1);
-    expectError(b, {"chunk 'MAIN' at byte 8", "run past the end of the file"});
-    expectError(header(150), {"truncated", "chunk header at byte 8"});
+    expectVoxError(b, {"chunk 'MAIN' at byte 8", "run past the end of the file"});
+    expectVoxError(header(150), {"truncated", "chunk header at byte 8"});
 }
 
 TEST(VoxErrors, ChunkPastItsParent) {
@@ -73,143 +64,145 @@ TEST(VoxErrors, ChunkPastItsParent) {
     const Bytes main = voxChunk("MAIN", {}, content);
     b.insert(b.end(), main.begin(), main.end());
     b.resize(b.size() + 200, 0);  // the file is long enough: only MAIN's extent is exceeded
-    expectError(b, {"chunk 'ABCD' at byte 20", "run past the end of chunk 'MAIN'"});
+    expectVoxError(b, {"chunk 'ABCD' at byte 20", "run past the end of chunk 'MAIN'"});
     // Negative sizes read as huge.
-    expectError(VoxWriter().chunk("XYZI", {}).bytes(), {"XYZI chunk without a SIZE"});
+    expectVoxError(VoxWriter().chunk("XYZI", {}).bytes(), {"XYZI chunk without a SIZE"});
     Bytes negative = VoxWriter().model(1, 1, 1, {}).bytes();
     negative[20 + 4] = 0xff, negative[20 + 5] = 0xff, negative[20 + 6] = 0xff, negative[20 + 7] = 0xff;
-    expectError(negative, {"chunk 'SIZE' at byte 20", "4294967295 content"});
+    expectVoxError(negative, {"chunk 'SIZE' at byte 20", "4294967295 content"});
 }
 
 TEST(VoxErrors, VoxelCountPastTheChunk) {
-    expectError(
+    expectVoxError(
         VoxWriter().size(2, 2, 2).chunk("XYZI", VoxContent().i32(10).raw({0, 0, 0, 1, 1, 1, 1, 1}).bytes()).bytes(),
         {"chunk 'XYZI' at byte 44", "voxel count 10 needs at least 40 bytes but only 8 remain"});
-    expectError(VoxWriter().size(2, 2, 2).chunk("XYZI", VoxContent().i32(-1).bytes()).bytes(),
-                {"voxel count is negative"});
+    expectVoxError(VoxWriter().size(2, 2, 2).chunk("XYZI", VoxContent().i32(-1).bytes()).bytes(),
+                   {"voxel count is negative"});
 }
 
 TEST(VoxErrors, VoxelOutsideTheModel) {
-    expectError(VoxWriter().model(2, 3, 4, {{0, 0, 0, 1}, {1, 3, 0, 1}}).bytes(),
-                {"chunk 'XYZI'", "model 0: voxel 1 at (1, 3, 0) lies outside the model's size 2 x 3 x 4"});
+    expectVoxError(VoxWriter().model(2, 3, 4, {{0, 0, 0, 1}, {1, 3, 0, 1}}).bytes(),
+                   {"chunk 'XYZI'", "model 0: voxel 1 at (1, 3, 0) lies outside the model's size 2 x 3 x 4"});
 }
 
 TEST(VoxErrors, BadModelSize) {
-    expectError(VoxWriter().model(0, 1, 1, {}).bytes(), {"chunk 'SIZE' at byte 20", "size 0 x 1 x 1", "1..2048"});
-    expectError(VoxWriter().model(1, kMaxVolumeSide + 1, 1, {}).bytes(), {"size 1 x 2049 x 1"});
-    expectError(VoxWriter().model(1, 1, -5, {}).bytes(), {"size 1 x 1 x -5"});
-    expectError(VoxWriter().chunk("SIZE", VoxContent().i32(1).i32(1).bytes()).bytes(), {"truncated: model size"});
+    expectVoxError(VoxWriter().model(0, 1, 1, {}).bytes(), {"chunk 'SIZE' at byte 20", "size 0 x 1 x 1", "1..2048"});
+    expectVoxError(VoxWriter().model(1, kMaxVolumeSide + 1, 1, {}).bytes(), {"size 1 x 2049 x 1"});
+    expectVoxError(VoxWriter().model(1, 1, -5, {}).bytes(), {"size 1 x 1 x -5"});
+    expectVoxError(VoxWriter().chunk("SIZE", VoxContent().i32(1).i32(1).bytes()).bytes(), {"truncated: model size"});
 }
 
 TEST(VoxErrors, SizeWithoutVoxels) {
-    expectError(VoxWriter().size(1, 1, 1).bytes(),
-                {"model 0: chunk 'SIZE' at byte 20 has no XYZI (or TDCZ) chunk after it"});
-    expectError(VoxWriter().size(1, 1, 1).size(1, 1, 1).xyzi({}).bytes(),
-                {"has no XYZI", "chunk 'SIZE' at byte 44 follows it"});
-    expectError(VoxWriter().size(1, 1, 1).chunk("RGBA", Bytes(1024, 0)).bytes(),
-                {"has no XYZI (or TDCZ) chunk after it", "found 'RGBA' instead"});
+    expectVoxError(VoxWriter().size(1, 1, 1).bytes(),
+                   {"model 0: chunk 'SIZE' at byte 20 has no XYZI (or TDCZ) chunk after it"});
+    expectVoxError(VoxWriter().size(1, 1, 1).size(1, 1, 1).xyzi({}).bytes(),
+                   {"has no XYZI", "chunk 'SIZE' at byte 44 follows it"});
+    expectVoxError(VoxWriter().size(1, 1, 1).chunk("RGBA", Bytes(1024, 0)).bytes(),
+                   {"has no XYZI (or TDCZ) chunk after it", "found 'RGBA' instead"});
 }
 
 TEST(VoxErrors, NoModel) {
-    expectError(VoxWriter().bytes(), {"holds no model"});
-    expectError(VoxWriter().chunk("RGBA", Bytes(1024, 0)).bytes(), {"holds no model"});
+    expectVoxError(VoxWriter().bytes(), {"holds no model"});
+    expectVoxError(VoxWriter().chunk("RGBA", Bytes(1024, 0)).bytes(), {"holds no model"});
 }
 
 TEST(VoxErrors, TooManyColumns) {
     VoxWriter w;
     for (int i = 0; i < 5; ++i)
         w.model(kMaxVolumeSide, kMaxVolumeSide, 1, {});
-    expectError(w.bytes(), {"model 4 (2048 x 2048 x 1)", "over the limit of 16777216"});
+    expectVoxError(w.bytes(), {"model 4 (2048 x 2048 x 1)", "over the limit of 16777216"});
 }
 
 TEST(VoxErrors, TooManyModels) {
     VoxWriter w;
     for (int i = 0; i <= kMaxVoxModels; ++i)
         w.model(1, 1, 1, {});
-    expectError(w.bytes(), {"more than 65536 models"});
+    expectVoxError(w.bytes(), {"more than 65536 models"});
 }
 
 TEST(VoxErrors, ShortPalette) {
-    expectError(VoxWriter().model(1, 1, 1, {}).chunk("RGBA", Bytes(1016, 0)).bytes(),
-                {"chunk 'RGBA'", "RGBA palette (255 used entries)"});
+    expectVoxError(VoxWriter().model(1, 1, 1, {}).chunk("RGBA", Bytes(1016, 0)).bytes(),
+                   {"chunk 'RGBA'", "RGBA palette (255 used entries)"});
 }
 
 TEST(VoxErrors, ShapeShowsAMissingModel) {
-    expectError(
+    expectVoxError(
         withGraph([](VoxWriter &w) { w.transform(0, 1, {{}}).group(1, {2}).transform(2, 3, {{}}).shape(3, 3); }),
         {"node 3 (chunk 'nSHP' at byte", "shows model 3 but the file has 1 models"});
-    expectError(withGraph([](VoxWriter &w) { w.transform(0, 1, {{}}).shape(1, -1); }), {"shows model -1"});
+    expectVoxError(withGraph([](VoxWriter &w) { w.transform(0, 1, {{}}).shape(1, -1); }), {"shows model -1"});
 }
 
 TEST(VoxErrors, BadRotation) {
     for (const char *r : {"3", "5", "15", "128", "x", "-1", "4 ", ""})
-        expectError(withFrame({{"_r", r}}),
-                    {"chunk 'nTRN' at byte", "node 2 frame 0: rotation _r \"" + std::string(r) + "\""});
-    expectError(withFrame({{"_r", "5"}}), {"is not a valid rotation (rows 0 and 1 use columns 1 and 1)"});
+        expectVoxError(withFrame({{"_r", r}}),
+                       {"chunk 'nTRN' at byte", "node 2 frame 0: rotation _r \"" + std::string(r) + "\""});
+    expectVoxError(withFrame({{"_r", "5"}}), {"is not a valid rotation (rows 0 and 1 use columns 1 and 1)"});
 }
 
 TEST(VoxErrors, BadTranslation) {
     for (const char *t : {"1 2 x", "1 2", "1 2 3 4", "", "1.5 0 0", "99999999999 0 0"})
-        expectError(withFrame({{"_t", t}}),
-                    {"node 2 frame 0: translation _t \"" + std::string(t) + "\" is not three integers"});
+        expectVoxError(withFrame({{"_t", t}}),
+                       {"node 2 frame 0: translation _t \"" + std::string(t) + "\" is not three integers"});
 }
 
 TEST(VoxErrors, BadFrameIndex) {
-    expectError(withFrame({{"_f", "-1"}}), {"frame index _f \"-1\""});
-    expectError(withGraph([](VoxWriter &w) {
-                    w.transform(0, 1, {{}}).shape(1, {{0, {{"_f", "one"}}}});
-                }),
-                {"node 1 model entry 0: frame index _f \"one\""});
+    expectVoxError(withFrame({{"_f", "-1"}}), {"frame index _f \"-1\""});
+    expectVoxError(withGraph([](VoxWriter &w) {
+                       w.transform(0, 1, {{}}).shape(1, {{0, {{"_f", "one"}}}});
+                   }),
+                   {"node 1 model entry 0: frame index _f \"one\""});
 }
 
 TEST(VoxErrors, MissingChildNode) {
-    expectError(withGraph([](VoxWriter &w) {
-                    w.transform(0, 1, {{}}).group(1, {2, 9}).transform(2, 3, {{}}).shape(3, 0);
-                }),
-                {"node 1 (chunk 'nGRP' at byte", "refers to child node 9, which the file does not define"});
+    expectVoxError(withGraph([](VoxWriter &w) {
+                       w.transform(0, 1, {{}}).group(1, {2, 9}).transform(2, 3, {{}}).shape(3, 0);
+                   }),
+                   {"node 1 (chunk 'nGRP' at byte", "refers to child node 9, which the file does not define"});
 }
 
 TEST(VoxErrors, CycleInTheGraph) {
-    expectError(withGraph([](VoxWriter &w) { w.transform(0, 1, {{}}).group(1, {2}).transform(2, 1, {{}}); }),
-                {"the scene graph has a cycle", "node 1 (chunk 'nGRP'"});
-    expectError(withGraph([](VoxWriter &w) { w.transform(0, 0, {{}}); }), {"cycle"});
+    expectVoxError(withGraph([](VoxWriter &w) { w.transform(0, 1, {{}}).group(1, {2}).transform(2, 1, {{}}); }),
+                   {"the scene graph has a cycle", "node 1 (chunk 'nGRP'"});
+    expectVoxError(withGraph([](VoxWriter &w) { w.transform(0, 0, {{}}); }), {"cycle"});
 }
 
 TEST(VoxErrors, DuplicateNodeIdOrNoRoot) {
-    expectError(withGraph([](VoxWriter &w) { w.transform(0, 1, {{}}).shape(1, 0).shape(1, 0); }),
-                {"node id 1 is used twice"});
-    expectError(withGraph([](VoxWriter &w) { w.transform(5, 1, {{}}).shape(1, 0); }), {"no root (no node with id 0)"});
+    expectVoxError(withGraph([](VoxWriter &w) { w.transform(0, 1, {{}}).shape(1, 0).shape(1, 0); }),
+                   {"node id 1 is used twice"});
+    expectVoxError(withGraph([](VoxWriter &w) { w.transform(5, 1, {{}}).shape(1, 0); }),
+                   {"no root (no node with id 0)"});
 }
 
 TEST(VoxErrors, GraphTooDeep) {
-    expectError(withGraph([](VoxWriter &w) {
-                    for (int i = 0; i < 300; ++i)
-                        w.group(i, {i + 1});
-                    w.shape(300, 0);
-                }),
-                {"the scene graph is 301 levels deep, over the limit of 256"});
+    expectVoxError(withGraph([](VoxWriter &w) {
+                       for (int i = 0; i < 300; ++i)
+                           w.group(i, {i + 1});
+                       w.shape(300, 0);
+                   }),
+                   {"the scene graph is 301 levels deep, over the limit of 256"});
 }
 
 TEST(VoxErrors, GraphExpandsToTooManyInstances) {
     // Each group lists the next one twice: 2^21 paths from 22 nodes.
-    expectError(withGraph([](VoxWriter &w) {
-                    for (int i = 0; i < 21; ++i)
-                        w.group(i, {i + 1, i + 1});
-                    w.shape(21, 0);
-                }),
-                {"expands to more than 1048576 shape instances"});
+    expectVoxError(withGraph([](VoxWriter &w) {
+                       for (int i = 0; i < 21; ++i)
+                           w.group(i, {i + 1, i + 1});
+                       w.shape(21, 0);
+                   }),
+                   {"expands to more than 1048576 shape instances"});
 }
 
 TEST(VoxErrors, NodeFieldsPastTheChunk) {
-    expectError(VoxWriter().model(1, 1, 1, {}).chunk("nTRN", VoxContent().i32(0).i32(1000).bytes()).bytes(),
-                {"chunk 'nTRN'", "node attribute count 1000 needs at least 8000 bytes"});
-    expectError(
+    expectVoxError(VoxWriter().model(1, 1, 1, {}).chunk("nTRN", VoxContent().i32(0).i32(1000).bytes()).bytes(),
+                   {"chunk 'nTRN'", "node attribute count 1000 needs at least 8000 bytes"});
+    expectVoxError(
         VoxWriter().model(1, 1, 1, {}).chunk("nGRP", VoxContent().i32(0).i32(1).i32(50).str("k").bytes()).bytes(),
         {"chunk 'nGRP'", "dictionary key 50 needs at least 50 bytes but only 5 remain"});
-    expectError(VoxWriter().model(1, 1, 1, {}).chunk("nGRP", VoxContent().i32(0).i32(0).i32(3).i32(1).bytes()).bytes(),
-                {"child count 3 needs at least 12 bytes but only 4 remain"});
-    expectError(withGraph([](VoxWriter &w) { w.transform(0, 1, {}); }), {"node 0 has no frames"});
-    expectError(
+    expectVoxError(
+        VoxWriter().model(1, 1, 1, {}).chunk("nGRP", VoxContent().i32(0).i32(0).i32(3).i32(1).bytes()).bytes(),
+        {"child count 3 needs at least 12 bytes but only 4 remain"});
+    expectVoxError(withGraph([](VoxWriter &w) { w.transform(0, 1, {}); }), {"node 0 has no frames"});
+    expectVoxError(
         withGraph([](VoxWriter &w) { w.transform(0, 1, {{}}).shape(1, std::vector<std::pair<int, VoxDict>>{}); }),
         {"node 1 shows no model"});
 }

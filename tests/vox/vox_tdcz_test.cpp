@@ -4,6 +4,7 @@
 // errors naming the chunk.
 #include "fixtures/tdcz_writer.h"
 #include "fixtures/vox_writer.h"
+#include "vox_expect_error.h"
 #include "formats/format_error.h"
 #include "formats/vox.h"
 
@@ -13,6 +14,7 @@
 #include <string>
 
 using namespace voxelfair;
+using namespace voxelfair::test;
 using namespace voxelfair::fixtures;
 
 namespace {
@@ -44,16 +46,6 @@ DenseModel randomModel(std::mt19937 &rng) {
 
 Bytes tdczFile(const DenseModel &m, bool finish) {
     return VoxWriter().size(m.x, m.y, m.z).chunk("TDCZ", tdczContent(m.x, m.y, m.z, m.dense, finish)).bytes();
-}
-
-void expectError(const Bytes &bytes, std::initializer_list<std::string> parts) {
-    try {
-        readVox(bytes.data(), bytes.size());
-        ADD_FAILURE() << "no error; expected one containing \"" << *parts.begin() << "\"";
-    } catch (const FormatError &e) {
-        for (const std::string &part : parts)
-            EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
-    }
 }
 
 }  // namespace
@@ -107,35 +99,35 @@ TEST(VoxTdcz, CorruptOrShortStreamsAreClearErrors) {
 
     Bytes badHeader = good;
     badHeader[12] ^= 0xff;  // the zlib header's first byte
-    expectError(VoxWriter().size(m.x, m.y, m.z).chunk("TDCZ", badHeader).bytes(),
-                {"chunk 'TDCZ' at byte 44", "model 0: corrupt zlib data"});
+    expectVoxError(VoxWriter().size(m.x, m.y, m.z).chunk("TDCZ", badHeader).bytes(),
+                   {"chunk 'TDCZ' at byte 44", "model 0: corrupt zlib data"});
 
     Bytes badBlock = good;
     badBlock[14] = 0xff;  // the first deflate block: type 3 is reserved
-    expectError(VoxWriter().size(m.x, m.y, m.z).chunk("TDCZ", badBlock).bytes(), {"corrupt zlib data"});
+    expectVoxError(VoxWriter().size(m.x, m.y, m.z).chunk("TDCZ", badBlock).bytes(), {"corrupt zlib data"});
 
     Bytes shortStream(good.begin(), good.begin() + 12 + 2);  // the zlib header alone
-    expectError(VoxWriter().size(m.x, m.y, m.z).chunk("TDCZ", shortStream).bytes(),
-                {"compressed voxels end after 0 of the " + std::to_string(m.dense.size()) + " bytes"});
+    expectVoxError(VoxWriter().size(m.x, m.y, m.z).chunk("TDCZ", shortStream).bytes(),
+                   {"compressed voxels end after 0 of the " + std::to_string(m.dense.size()) + " bytes"});
 
     // A finished stream of fewer voxels than the size asks for.
     const Bytes fewer = tdczContent(m.x, m.y, m.z, Bytes(m.dense.begin(), m.dense.end() - 1), true);
-    expectError(VoxWriter().size(m.x, m.y, m.z).chunk("TDCZ", fewer).bytes(),
-                {"end after " + std::to_string(m.dense.size() - 1)});
+    expectVoxError(VoxWriter().size(m.x, m.y, m.z).chunk("TDCZ", fewer).bytes(),
+                   {"end after " + std::to_string(m.dense.size() - 1)});
 }
 
 TEST(VoxTdcz, SizesAndLimitsAreChecked) {
     const Bytes one = tdczContent(1, 1, 1, {5});
-    expectError(VoxWriter().size(2, 1, 1).chunk("TDCZ", one).bytes(),
-                {"compressed voxels' size 1 x 1 x 1 differs from the SIZE chunk's 2 x 1 x 1"});
-    expectError(VoxWriter().chunk("TDCZ", one).bytes(), {"a TDCZ chunk without a SIZE chunk before it"});
-    expectError(VoxWriter().size(1, 1, 1).chunk("TDCZ", {1, 0, 0, 0}).bytes(), {"truncated: TDCZ model size"});
+    expectVoxError(VoxWriter().size(2, 1, 1).chunk("TDCZ", one).bytes(),
+                   {"compressed voxels' size 1 x 1 x 1 differs from the SIZE chunk's 2 x 1 x 1"});
+    expectVoxError(VoxWriter().chunk("TDCZ", one).bytes(), {"a TDCZ chunk without a SIZE chunk before it"});
+    expectVoxError(VoxWriter().size(1, 1, 1).chunk("TDCZ", {1, 0, 0, 0}).bytes(), {"truncated: TDCZ model size"});
     // 256^3 voxels claimed from a dozen bytes: refused before anything is allocated.
     VoxContent big;
     big.i32(256).i32(256).i32(256).raw({0x78, 0x9c, 0, 0, 0, 0, 0, 0, 0, 0});
-    expectError(VoxWriter().size(256, 256, 256).chunk("TDCZ", big.bytes()).bytes(),
-                {"10 compressed bytes cannot hold the 16777216 voxels"});
+    expectVoxError(VoxWriter().size(256, 256, 256).chunk("TDCZ", big.bytes()).bytes(),
+                   {"10 compressed bytes cannot hold the 16777216 voxels"});
     VoxContent huge;
     huge.i32(2048).i32(2048).i32(64);
-    expectError(VoxWriter().size(2048, 2048, 64).chunk("TDCZ", huge.bytes()).bytes(), {"over the limit of"});
+    expectVoxError(VoxWriter().size(2048, 2048, 64).chunk("TDCZ", huge.bytes()).bytes(), {"over the limit of"});
 }
