@@ -64,11 +64,6 @@ inline namespace VOXELFAIR_SIMD_VARIANT {
 ConstrainedFairingReport fairConstrained(const MutablePolygonMesh &mesh, const uint8_t *vertexSelected,
                                          const ConstrainedFairingOptions &options) {
     ConstrainedFairingReport report;
-    auto finish = [&](FairingStatus status, const char *message) {
-        report.status = status;
-        report.message = message;
-        return report;
-    };
     if (options.passes < 0 || options.normalLevels < 0 || options.normalLevels > 8 || options.positionSweeps < 0 ||
         options.stepReach < 1 || options.featureReach < 0 || options.driftRounds < 0 ||
         !(options.cellHalfWidth > 0.0f) || !std::isfinite(options.cellHalfWidth) ||
@@ -79,7 +74,7 @@ ConstrainedFairingReport fairConstrained(const MutablePolygonMesh &mesh, const u
                           "finite and >= 0");
     if (const FairingStatus status = checkFairingInput(mesh, options.passes, &report.message);
         status != FairingStatus::Ok)
-        return finish(status, report.message);
+        return finishedReport(report, status, report.message);
     glm::vec3 *const positions = mesh.positions;
     const size_t vertexCount = mesh.vertexCount, polygonCount = mesh.polygonCount;
     const uint32_t *const polygonOffsets = mesh.polygonOffsets, *const polygonIndices = mesh.polygonIndices;

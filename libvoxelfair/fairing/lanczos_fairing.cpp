@@ -73,17 +73,12 @@ FairingStatus checkFairingInput(const PolygonMesh &mesh, int passes, const char 
 FairingReport fairModifiedLanczos(const MutablePolygonMesh &mesh, const uint8_t *vertexSelected,
                                   const LanczosFairingOptions &options) {
     FairingReport report;
-    auto finish = [&](FairingStatus status, const char *message) {
-        report.status = status;
-        report.message = message;
-        return report;
-    };
     if (!std::isfinite(options.lambda) || options.passes < 0 || !std::isfinite(options.voxelSize) ||
         options.voxelSize < 0.0f)
         throw OptionError("fairing: lambda and voxelSize must be finite, voxelSize and passes >= 0");
     if (const FairingStatus status = checkFairingInput(mesh, options.passes, &report.message);
         status != FairingStatus::Ok)
-        return finish(status, report.message);
+        return finishedReport(report, status, report.message);
 
     glm::vec3 *const positions = mesh.positions;
     const size_t vertexCount = mesh.vertexCount;
@@ -93,8 +88,8 @@ FairingReport fairModifiedLanczos(const MutablePolygonMesh &mesh, const uint8_t 
 
     report.voxelSize = options.voxelSize > 0.0f ? options.voxelSize : detectVoxelSize(mesh);
     if (!(report.voxelSize > 0.0f))
-        return finish(FairingStatus::NothingToDo,
-                      "no polygon edge of non-zero finite length to take the voxel size from");
+        return finishedReport(report, FairingStatus::NothingToDo,
+                              "no polygon edge of non-zero finite length to take the voxel size from");
 
     // The work arrays are kept from call to call (per thread): a filter runs once per click, and
     // fresh multi-megabyte arrays cost more in first-touch page faults than the pass itself.
@@ -112,7 +107,7 @@ FairingReport fairModifiedLanczos(const MutablePolygonMesh &mesh, const uint8_t 
         report.maxDisplacement = std::max(report.maxDisplacement, stats.maxDisplacement);
         ++report.passes;
     }
-    return finish(FairingStatus::Ok, "ok");
+    return finishedReport(report, FairingStatus::Ok, "ok");
 }
 
 }  // namespace voxelfair

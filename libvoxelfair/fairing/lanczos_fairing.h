@@ -40,6 +40,15 @@ enum class FairingStatus {
 // saying why when there is nothing to smooth, else Ok.
 FairingStatus checkFairingInput(const PolygonMesh &mesh, int passes, const char **message);
 
+// Both modes' reports (FairingReport, ConstrainedFairingReport) end a call this way: the status
+// and its static message set, the report returned.
+template <class Report>
+Report finishedReport(Report &report, FairingStatus status, const char *message) {
+    report.status = status;
+    report.message = message;
+    return report;
+}
+
 struct FairingReport {
     FairingStatus status = FairingStatus::Ok;
     const char *message = "ok";    // static text saying why when status != Ok
