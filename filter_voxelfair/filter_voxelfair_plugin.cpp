@@ -181,9 +181,10 @@ void FilterVoxelfairPlugin::initParameterSet(QAction *action, MeshModel &m, Rich
                                     "The largest texture side; if the charts do not fit, the resolution is lowered."));
         parameters.addParam(RichFloat("voxelSize", 0.0f, "Voxel size",
                                       "Length of a voxel in mesh units; 0 detects it from the dominant edge length."));
-        parameters.addParam(RichInt("gutter", 4, "Gutter (texels)",
-                                    "Empty texels between charts; half of it is filled with the chart's colours so "
-                                    "bilinear filtering and the first mip level do not bleed."));
+        parameters.addParam(RichInt("gutter", 2, "Gutter (texels)",
+                                    "Empty texels between charts; half of it is filled with the chart's colours, "
+                                    "and charts sit on 2 x 2 texel blocks of their own, so bilinear filtering and "
+                                    "the first mip level do not bleed."));
         parameters.addParam(RichEnum("colours", 0,
                                      QStringList() << "Crisp voxel colours"
                                                    << "Smoothed vertex colours",

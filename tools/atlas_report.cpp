@@ -10,7 +10,9 @@
 //                                 the atlas filter's defaults: coverage, charts per thousand faces,
 //                                 crispness per model
 //   atlas_report --ppm DIR        also writes each texture as DIR/<mesh>_<mode>.ppm
-//   atlas_report --gutter N       texels between charts (default 4; the bake fills N/2 of them)
+//   atlas_report --gutter N       texels between charts (default 2 on 2 x 2 blocks; the bake fills
+//                                 N/2 of them, then the blocks), --shared too
+//   atlas_report --shared --counts  also interior samples matching, all and on sure faces
 #include "atlas/atlas_measures.h"
 #include "atlas/texture_atlas.h"
 #include "base/error.h"
@@ -53,7 +55,7 @@ void writePpm(const std::string &path, const AtlasTexture &t) {
 }
 
 int gutter = PackOptions().gutter;
-bool noFill = false, square = false;
+bool noFill = false, square = false, counts = false;
 const char *only = nullptr;  // --only NAME: one shared model
 float cone = ChartOptions().minSeedCosine;
 
@@ -164,6 +166,7 @@ void reportShared(const char *ppmDir) {
     options.pack.texelsPerUnit = 8.0f;  // the filter's default
     options.pack.fillTexture = !noFill;
     options.pack.allowWide = !square;
+    options.pack.gutter = gutter;
     options.charts.minSeedCosine = cone;
     std::printf("\nShared models, chain at the filter's defaults (%g texels per voxel, max %d):\n",
                 double(options.pack.texelsPerUnit), options.pack.maxTextureSize);
@@ -194,6 +197,9 @@ void reportShared(const char *ppmDir) {
                     atlas.layout.texelsPerUnit * run->mesh.voxelSize, 100 * m.packingEfficiency,
                     100 * m.centreEfficiency, run->chartsPerKiloFace(), 100 * fid.nearest(), 100 * fid.bilinear(),
                     atlas.charts.separatedFaces, m.overlappingChartTexels + m.overlappingCentres, run->atlasMs);
+        if (counts)
+            std::printf("    nearest %zu/%zu, sure %zu/%zu\n", fid.nearestMatches, fid.samples,
+                        fid.guaranteedNearestMatches, fid.guaranteedNearest);
         if (ppmDir)
             writePpm(std::string(ppmDir) + "/" + model->name + "_shared.ppm", atlas.texture);
     }
@@ -218,6 +224,8 @@ int main(int argc, char **argv) {
             noFill = true;
         else if (!std::strcmp(argv[i], "--square"))
             square = true;
+        else if (!std::strcmp(argv[i], "--counts"))
+            counts = true;
         else if (!std::strcmp(argv[i], "--cone") && i + 1 < argc)
             cone = float(std::atof(argv[++i]));
         else if (!std::strcmp(argv[i], "--only") && i + 1 < argc)
@@ -227,10 +235,11 @@ int main(int argc, char **argv) {
         else if (!std::strcmp(argv[i], "--gutter") && i + 1 < argc)
             gutter = std::atoi(argv[++i]);
         else {
-            std::fprintf(stderr,
-                         "usage: %s [--all] [--models] [--shared [--only NAME] [--no-fill] [--square] [--cone COS]] "
-                         "[--ppm DIR] [--gutter N]\n",
-                         argv[0]);
+            std::fprintf(
+                stderr,
+                "usage: %s [--all] [--models] [--shared [--only NAME] [--no-fill] [--square] [--counts] [--cone COS]] "
+                "[--ppm DIR] [--gutter N]\n",
+                argv[0]);
             return 2;
         }
     }

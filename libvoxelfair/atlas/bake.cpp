@@ -128,6 +128,34 @@ void dilate(Canvas &canvas, int rings) {
     }
 }
 
+// Layouts on 2 x 2 blocks (AtlasLayout::block): each aligned block with a painted texel belongs
+// to one chart (its texels, or its first ring, which lies inside its packed mask), so its empty
+// texels take the mean of its painted ones; a box-filtered mip level 1 then never mixes charts.
+void fillBlocks(Canvas &canvas) {
+    for (int y = 0; y < canvas.height; y += 2)
+        for (int x = 0; x < canvas.width; x += 2) {
+            size_t at[4];
+            int n = 0;
+            for (int dy = 0; dy < std::min(2, canvas.height - y); ++dy)
+                for (int dx = 0; dx < std::min(2, canvas.width - x); ++dx)
+                    at[n++] = canvas.index(x + dx, y + dy);
+            unsigned sum[3] = {0, 0, 0}, count = 0;
+            for (int k = 0; k < n; ++k)
+                if (canvas.filled[at[k]] == 1) {
+                    for (int ch = 0; ch < 3; ++ch)
+                        sum[ch] += canvas.rgba[4 * at[k] + size_t(ch)];
+                    ++count;
+                }
+            if (count == 0 || int(count) == n)
+                continue;
+            const glm::u8vec3 mean((sum[0] + count / 2) / count, (sum[1] + count / 2) / count,
+                                   (sum[2] + count / 2) / count);
+            for (int k = 0; k < n; ++k)
+                if (canvas.filled[at[k]] != 1)
+                    canvas.paint(at[k], mean);
+        }
+}
+
 }  // namespace
 
 AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const BakeOptions &options) {
@@ -217,6 +245,8 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
     }
     out.dilation = options.dilation < 0 ? layout.gutter / 2 : std::min(options.dilation, width);
     dilate(canvas, out.dilation);
+    if (layout.block == 2 && out.dilation > 0)
+        fillBlocks(canvas);
     return out;
 }
 

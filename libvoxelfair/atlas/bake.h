@@ -5,7 +5,10 @@
 // (each such texel belongs to exactly one face), then the texels it merely overlaps and no
 // centre claimed (conservative coverage, so chart edges are fully painted). Then `dilation`
 // rings of texels around the charts are filled with the mean of their painted neighbours, so
-// bilinear filtering and the first mip levels read chart colours, not background.
+// bilinear filtering and the first mip levels read chart colours, not background. On a layout
+// packed on 2 x 2 blocks (AtlasLayout::block, PackOptions::mipBlocks) the rest of every block
+// a chart or its rings touch then takes the mean of the block's painted texels: the blocks
+// hold one chart each, so a box-filtered mip level 1 keeps the charts apart too.
 //
 // Colour sources:
 //   * FaceColours (default, crisp): a texel takes the colour of the face it lies in, so a
@@ -35,8 +38,8 @@ const char *toString(BakeSource source);
 struct BakeOptions {
     BakeSource source = BakeSource::FaceColours;
     // Rings of texels filled around every chart. -1: half the layout's gutter, the most that
-    // keeps two charts' rings from meeting (default gutter 4 -> 2 rings: bilinear filtering
-    // needs 1, the first mip level 2).
+    // keeps two charts' rings from meeting (gutter 4 -> 2 rings: bilinear filtering needs 1,
+    // the first mip level 2; the default gutter 2 on blocks: 1 ring, then the blocks filled).
     int dilation = -1;
     // Texels outside every chart and its rings. Charts and rings are opaque (alpha 255).
     glm::u8vec4 background{0, 0, 0, 0};

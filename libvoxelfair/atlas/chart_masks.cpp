@@ -119,4 +119,47 @@ bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int pa
     return true;
 }
 
+void coarsenChartMasks(const ChartMasks &fine, ChartMasks &coarse) {
+    coarse.charts.resize(fine.charts.size());
+    coarse.profiles.clear();
+    coarse.texelsPerUnit = fine.texelsPerUnit;
+    coarse.padding = fine.padding;
+    coarse.totalRowTexels = 0;
+    // Per line pair: the lower of the two lows and the higher of the two highs, halved; an
+    // empty line (low past its high) leaves the other's extent.
+    auto pairs = [](const int16_t *lo, const int16_t *hi, int count, int16_t *outLo, int16_t *outHi) {
+        int64_t blocks = 0;
+        for (int k = 0; 2 * k < count; ++k) {
+            int l = INT16_MAX, h = -1;
+            for (int j = 2 * k; j < std::min(count, 2 * k + 2); ++j)
+                if (lo[j] <= hi[j])
+                    l = std::min<int>(l, lo[j]), h = std::max<int>(h, hi[j]);
+            outLo[k] = int16_t(h < 0 ? INT16_MAX : l / 2);
+            outHi[k] = int16_t(h < 0 ? -1 : h / 2);
+            blocks += h < 0 ? 0 : outHi[k] - outLo[k] + 1;
+        }
+        return blocks;
+    };
+    for (size_t c = 0; c < fine.charts.size(); ++c) {
+        const ChartMask &f = fine.charts[c];
+        ChartMask &m = coarse.charts[c];
+        m = f;
+        m.width = (f.width + 1) / 2;
+        m.height = (f.height + 1) / 2;
+        m.profile = coarse.profiles.size();
+        coarse.profiles.resize(m.profile + 2 * size_t(m.width) + 2 * size_t(m.height));
+        int16_t *bottom = coarse.profiles.data() + m.profile, *top = bottom + m.width;
+        int16_t *left = top + m.width, *right = left + m.height;
+        coarse.totalRowTexels +=
+            size_t(pairs(f.rowLeft(fine.profiles), f.rowRight(fine.profiles), f.height, left, right));
+        pairs(f.colBottom(fine.profiles), f.colTop(fine.profiles), f.width, bottom, top);
+        for (int k = 0; k < m.height; ++k)  // empty rows as rasterizeChartMasks leaves them
+            if (right[k] < 0)
+                left[k] = int16_t(m.width);
+        for (int k = 0; k < m.width; ++k)
+            if (top[k] < 0)
+                bottom[k] = int16_t(m.height);
+    }
+}
+
 }  // namespace voxelfair

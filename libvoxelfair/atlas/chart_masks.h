@@ -55,6 +55,12 @@ struct ChartPlacement {
 // as a mask would be wider or taller than maxSide, which bounds the work for absurd densities.
 bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int padding, int maxSide, ChartMasks &masks);
 
+// The masks on a grid of 2 x 2 texel blocks (PackOptions::mipBlocks): a block is set when any
+// of its texels is, so masks placed without overlap at even texels share no block. Mask sizes
+// in blocks; scale and offset still map chart points to the fine mask's texels, whose size is
+// twice the coarse one (rounded up to even). totalRowTexels counts blocks.
+void coarsenChartMasks(const ChartMasks &fine, ChartMasks &coarse);
+
 // The mask-local texel position of chart point `p` (scaled and offset already) after `quarterTurns`
 // counter-clockwise turns of the width x height mask; integer texels map to integer texels.
 inline glm::dvec2 turnInMask(glm::dvec2 p, int width, int height, int quarterTurns) {

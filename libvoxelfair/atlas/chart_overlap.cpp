@@ -68,4 +68,23 @@ bool boundaryCrossesItself(const std::vector<ChartBoundaryEdge> &edges) {
     return false;
 }
 
+bool cornersOverlap(std::vector<ChartCorner> &corners) {
+    constexpr double kTurn = 6.283185307179586, kSlack = 1e-3;
+    std::sort(corners.begin(), corners.end(), [](const ChartCorner &a, const ChartCorner &b) {
+        return a.vertex != b.vertex ? a.vertex < b.vertex : a.from < b.from;
+    });
+    for (size_t i = 0; i < corners.size();) {
+        size_t j = i + 1;
+        while (j < corners.size() && corners[j].vertex == corners[i].vertex)
+            ++j;
+        for (size_t k = i; k + 1 < j; ++k)  // each sector ends before the next one starts
+            if (corners[k].from + corners[k].width > corners[k + 1].from + kSlack)
+                return true;
+        if (j - i > 1 && corners[j - 1].from + corners[j - 1].width > corners[i].from + kTurn + kSlack)
+            return true;  // the last one, past a full turn, into the first
+        i = j;
+    }
+    return false;
+}
+
 }  // namespace voxelfair

@@ -24,4 +24,15 @@ struct ChartBoundaryEdge {
 // count: neither covers any area twice).
 bool boundaryCrossesItself(const std::vector<ChartBoundaryEdge> &edges);
 
+// The boundary can also touch itself at a vertex whose faces, around it, cover some angle twice
+// (the chart goes round the vertex past a gap of faces it left out, and its two sides overlap
+// near the vertex without any two edges crossing). A corner: a face's vertex and the angles
+// of its two edges there in UV, the face's sector going counter-clockwise from `from` by
+// `width` (0..pi). True when two sectors at one vertex overlap by more than 1e-3 radians.
+struct ChartCorner {
+    uint32_t vertex;
+    double from, width;
+};
+bool cornersOverlap(std::vector<ChartCorner> &corners);
+
 }  // namespace voxelfair

@@ -3,6 +3,7 @@
 #include "atlas/chart_overlap.h"
 #include "atlas/edge_adjacency.h"
 #include "atlas/seed_plane.h"
+#include "atlas/texel_raster.h"
 
 #include <algorithm>
 #include <cmath>
@@ -169,6 +170,7 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
 
     // Whether the last chart's projection winds over itself (chart_overlap.h).
     std::vector<ChartBoundaryEdge> boundary;
+    std::vector<ChartCorner> corners;
     auto foldsOver = [&](uint32_t c) {
         boundary.clear();
         for (size_t i = out.chartFirstFace[c]; i < out.chartFaces.size(); ++i) {
@@ -182,7 +184,22 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
                                     mesh.triangles[3 * f + k1]});
             }
         }
-        return boundaryCrossesItself(boundary);
+        if (boundaryCrossesItself(boundary))
+            return true;
+        corners.clear();
+        for (size_t i = out.chartFirstFace[c]; i < out.chartFaces.size(); ++i) {
+            const glm::vec2 *w = &out.wedgeUv[3 * i];
+            if (doubleArea(w[0], w[1], w[2]) <= 0)
+                continue;  // no sector (degenerate in UV)
+            for (int k = 0; k < 3; ++k) {
+                const glm::dvec2 a = glm::dvec2(w[(k + 1) % 3] - w[k]), b = glm::dvec2(w[(k + 2) % 3] - w[k]);
+                double from = std::atan2(a.y, a.x);
+                from += from < 0 ? 6.283185307179586 : 0;
+                corners.push_back({mesh.triangles[3 * size_t(out.chartFaces[i]) + k], from,
+                                   std::atan2(a.x * b.y - a.y * b.x, a.x * b.x + a.y * b.y)});
+            }
+        }
+        return cornersOverlap(corners);
     };
 
     // Charts in seed order. A chart that winds over itself keeps the half of its faces nearest

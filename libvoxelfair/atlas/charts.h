@@ -8,7 +8,8 @@
 //     authors did (doc/method.md §6b). Non-manifold edges, and edges between faces of different
 //     texel scales, are chart borders. A mesh storing its
 //     corners unshared (more border edges than faces) has its edges matched by position.
-//   * Beyond the paper: a chart whose projection winds over itself (a helical ramp) is cut
+//   * Beyond the paper: a chart whose projection winds over itself (a helical ramp), or goes
+//     round a vertex past a gap so that its faces there overlap, is cut
 //     back to the half of its faces nearest the seed until it does not (chart_overlap.h), so
 //     no texel is shared by two faces.
 //   * Projection: orthographic onto the seed plane (seed_plane.h), in model units (times the

@@ -17,10 +17,22 @@ namespace {
 
 constexpr int kMaxSide = 16384;  // the packers keep texel rows and columns in int16
 
+// Masks in texels and, with mipBlocks, on 2 x 2 blocks (what the packer then sees); placements
+// in texels either way.
 struct Packing {
-    ChartMasks masks;
+    int block = 1;
+    ChartMasks masks, blocks;
     std::vector<ChartPlacement> placements;
+    const ChartMasks &packed() const { return block > 1 ? blocks : masks; }
 };
+
+bool rasterize(const AtlasCharts &charts, double density, int padding, int maxSide, Packing &out) {
+    if (!rasterizeChartMasks(charts, density, padding, maxSide, out.masks))
+        return false;
+    if (out.block > 1)
+        coarsenChartMasks(out.masks, out.blocks);
+    return true;
+}
 
 // Whether the charts fit, and what that says about the density that would just fit. The paper
 // packer's square grows like the density: `grow` = side / square. For the tight packer, `demand`
@@ -34,12 +46,16 @@ struct Fit {
 };
 
 // Places already rasterised masks in a side x height rectangle (the paper packer: a square).
-Fit place(const ChartMasks &masks, PackMode mode, int side, int height, bool turns,
-          std::vector<ChartPlacement> &placements) {
-    const double square = double(side) * height;
+Fit place(Packing &packing, PackMode mode, int side, int height, bool turns) {
+    const ChartMasks &masks = packing.packed();
+    std::vector<ChartPlacement> &placements = packing.placements;
     if (mode == PackMode::Tight) {
-        const TightPacking t = packTight(masks, side, height, turns, placements);
-        return {t.fits, 0, double(t.room) / square, double(t.placedRoom) / square, double(t.top) / height};
+        const int b = packing.block, units = side / b, rows = height / b;  // in blocks
+        const double square = double(units) * rows;
+        const TightPacking t = packTight(masks, units, rows, turns, placements);
+        for (ChartPlacement &p : placements)
+            p.x *= b, p.y *= b;
+        return {t.fits, 0, double(t.room) / square, double(t.placedRoom) / square, double(t.top) / rows};
     }
     const int used = packPaper(masks, placements);
     const double grow = double(side) / std::max(used, 1);
@@ -54,9 +70,9 @@ Fit place(const ChartMasks &masks, PackMode mode, int side, int height, bool tur
 Fit attempt(const AtlasCharts &charts, const PackOptions &o, double density, int padding, int side, int height,
             Packing &out, size_t &attempts) {
     ++attempts;
-    if (!rasterizeChartMasks(charts, density, padding, side, out.masks))
+    if (!rasterize(charts, density, padding, side, out))
         return {};  // a chart alone is wider than the texture
-    return place(out.masks, o.mode, side, height, o.allowRotation, out.placements);
+    return place(out, o.mode, side, height, o.allowRotation);
 }
 
 // The largest density (within 0.5%, below `ceiling`) whose packing fits a side x height
@@ -82,9 +98,12 @@ constexpr double kLeastFillGain = 1.04;
 // rim kept), fills `efficiency` of a side x height rectangle: the packing's room per texel of
 // the rows it reached, which a denser packing of the same charts matches or beats. At most
 // `ceiling`.
-double fillScale(const ChartMasks &masks, int side, int height, double efficiency, double ceiling) {
+double fillScale(const Packing &packing, int side, int height, double efficiency, double ceiling) {
+    const ChartMasks &masks = packing.packed();
+    const int b = packing.block;
+    side /= b, height /= b;                               // in mask units
     const int64_t boxed = int64_t(side) * height / 1024;  // as pack_tight.cpp
-    const double rim = 2.0 * masks.padding + 1;
+    const double rim = (2.0 * masks.padding + b) / b;
     auto room = [&](double scale) {
         double total = 0;
         for (const ChartMask &m : masks.charts) {
@@ -135,7 +154,7 @@ bool densestFit(const AtlasCharts &charts, const PackOptions &o, int padding, in
         // Aim from the known fit: the charts' room estimated at a higher density, filling as well as they did; should
         // that miss, the packed height grown like the density squared (below it, usually).
         fallback = knownReached > 0 ? known * std::sqrt(kFillHeightAim / knownReached) : 0;
-        d = knownReached > 0  ? known * fillScale(best.masks, side, height, knownFilled / knownReached, miss / known)
+        d = knownReached > 0  ? known * fillScale(best, side, height, knownFilled / knownReached, miss / known)
             : knownFilled > 0 ? known * std::sqrt(kFillAim / knownFilled)
                               : miss * 0.85;
         d = std::max(d, fallback);
@@ -146,6 +165,7 @@ bool densestFit(const AtlasCharts &charts, const PackOptions &o, int padding, in
         d = std::clamp(d, known * 1.001, miss / 1.001);
     }
     Packing trial;
+    trial.block = best.block;
     for (int i = 0; i < (known > 0 ? o.fillAttempts : 16) && d > floor; ++i) {
         if (known > 0 && miss <= fit * 1.005)
             break;
@@ -215,6 +235,8 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
     const int padding = out.gutter / 2;
 
     Packing packing;
+    packing.block = options.mipBlocks && options.mode == PackMode::Tight ? 2 : 1;
+    out.block = packing.block;
     int height = 0;
     if (options.textureSize > 0) {
         out.size = std::min(options.textureSize, kMaxSide);
@@ -233,22 +255,22 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
         bool fits = false;
         double filled = 0, reached = 0;
         ++out.packAttempts;
-        if (rasterizeChartMasks(charts, out.texelsPerUnit, padding, maxSide, packing.masks)) {
+        if (rasterize(charts, out.texelsPerUnit, padding, maxSide, packing)) {
+            const int b = packing.block;
             int longest = 1, longestShort = 1;
-            for (const ChartMask &m : packing.masks.charts) {
-                longest = std::max({longest, m.width, m.height});
-                longestShort = std::max(longestShort, std::min(m.width, m.height));
+            for (const ChartMask &m : packing.packed().charts) {
+                longest = std::max({longest, b * m.width, b * m.height});
+                longestShort = std::max(longestShort, b * std::min(m.width, m.height));
             }
             // The smallest square whose area holds the masks, or half of it when wide.
-            const double room = double(packing.masks.totalRowTexels);
+            const double room = double(packing.packed().totalRowTexels) * b * b;
             int side = nextPowerOfTwo(std::max<double>(longest, std::sqrt(room)));
             height = side;
             if (wide && side > 1 && double(side) * side / 2 >= room && side / 2 >= longestShort)
                 height = side / 2;
             for (out.size = side; out.size <= maxSide; nextShape(wide, out.size, height)) {
                 if (out.size >= longest && height >= longestShort) {
-                    const Fit f =
-                        place(packing.masks, options.mode, out.size, height, options.allowRotation, packing.placements);
+                    const Fit f = place(packing, options.mode, out.size, height, options.allowRotation);
                     if (f.fits) {
                         fits = true;
                         filled = f.filled;
@@ -286,13 +308,15 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
     const glm::dvec2 extent(out.width, out.height);
     for (size_t c = 0; c < charts.chartCount(); ++c) {
         const ChartMask &m = packing.masks.charts[c];
+        const int b = packing.block;  // the packed mask's size in texels: even with blocks
+        const int maskWidth = b * packing.packed().charts[c].width, maskHeight = b * packing.packed().charts[c].height;
         const ChartPlacement &p = packing.placements[c];
         for (uint32_t i = charts.chartFirstFace[c]; i < charts.chartFirstFace[c + 1]; ++i) {
             const uint32_t f = charts.chartFaces[i];
             for (int k = 0; k < 3; ++k) {
                 const glm::dvec2 q = glm::dvec2(charts.wedgeUv[3 * size_t(i) + k]) * m.scale + m.offset;
                 out.wedgeUv[3 * f + k] =
-                    glm::vec2((turnInMask(q, m.width, m.height, p.quarterTurns) + glm::dvec2(p.x, p.y)) / extent);
+                    glm::vec2((turnInMask(q, maskWidth, maskHeight, p.quarterTurns) + glm::dvec2(p.x, p.y)) / extent);
             }
         }
     }

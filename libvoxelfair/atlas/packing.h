@@ -2,7 +2,8 @@
 // density and write the final per-wedge UVs.
 //
 // Charts are packed as rasterised masks (chart_masks.h) grown by half the gutter, so the gutter
-// holds in texels whatever the density. Two packers:
+// holds in texels whatever the density; by default (mipBlocks) on aligned 2 x 2 blocks, which
+// keeps mip level 1 apart with half the gutter. Two packers:
 //   * Paper - the authors' guillotine tree over bounding boxes (pack_paper.h), kept as the
 //             reference: 27% of a 1024^2 texture covered on a Taubin-smoothed voxel sphere of
 //             radius 20 (tools/atlas_report).
@@ -64,8 +65,17 @@ struct PackOptions {
     // on each side (BakeOptions::dilation), which keeps bilinear filtering and the first mip
     // level from mixing a chart with the background: level 0 needs 1 texel, level 1 needs 2.
     // Deeper mip levels need 8 (4 rings; 68% instead of 76% on the reference sphere). Rounded
-    // up to even, at least 2.
-    int gutter = 4;
+    // up to even, at least 2. With mipBlocks, 2 keeps what 4 keeps without them (levels 0 and 1).
+    int gutter = 2;
+    // Tight packing: place the charts on aligned 2 x 2 texel blocks, each block holding texels of
+    // one chart only (masks coarsened to blocks, packed at half resolution, placed at even
+    // texels; the bake fills every block a chart touches with that chart's colours). A box
+    // filtered mip level 1 texel is then one chart's, and bilinear filtering at level 1 of a
+    // point inside a chart reads only the blocks within one texel of it: a 1-texel ring (gutter
+    // 2) protects levels 0 and 1, as 2 rings (gutter 4) do on the texel grid, for about 1.5
+    // texels less per chart side (the mip-aligned padding of texture atlas practice, e.g.
+    // xatlas's blockAlign, here at 2 x 2). Sizes and placements stay in texels.
+    bool mipBlocks = true;
     // Tight mode: also try each chart turned by 90, 180 and 270 degrees.
     bool allowRotation = true;
 };
@@ -80,6 +90,7 @@ struct AtlasLayout {
     bool densityReduced = false;
     std::string note;  // why the density was lowered, when it was
     int gutter = 0;    // as used (even)
+    int block = 1;     // 2: charts placed on aligned 2 x 2 blocks (PackOptions::mipBlocks)
     // Three per face, in [0, 1]^2 with v up (OpenGL / OBJ convention): texel (x, y) of the
     // width x height texture covers [x, x+1]/width x [y, y+1]/height.
     std::vector<glm::vec2> wedgeUv;

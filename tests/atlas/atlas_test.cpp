@@ -1,6 +1,7 @@
 // Section 4.5 texture atlas: charts, packing, bake and the measures, on families of meshes.
 #include "atlas/atlas_measures.h"
 #include "shapes/atlas_test_meshes.h"
+#include "atlas/chart_overlap.h"
 #include "atlas/edge_adjacency.h"
 #include "atlas/texel_raster.h"
 #include "atlas/texture_atlas.h"
@@ -350,6 +351,20 @@ TEST(Charts, AChartWindingOverItselfIsCutBack) {
     expectValidAtlas(ramp, charts, layout, 0.7f);  // includes: no texel centre under two faces
 }
 
+// Two faces at one vertex whose sectors overlap (the chart went round the vertex past a gap)
+// fold the chart though no two boundary edges cross; a full fan of six does not.
+TEST(Charts, SectorsOverlappingAtAVertexAreAFold) {
+    const double sixth = 6.283185307179586 / 6;
+    std::vector<ChartCorner> fan;
+    for (int k = 0; k < 6; ++k)
+        fan.push_back({7, k * sixth, sixth});
+    EXPECT_FALSE(cornersOverlap(fan));
+    std::vector<ChartCorner> overlapping = {{3, 4.2, 0.7}, {3, 4.83, 0.7}, {5, 0.0, 3.0}};
+    EXPECT_TRUE(cornersOverlap(overlapping));
+    std::vector<ChartCorner> pastTheTurn = {{3, 0.1, 1.0}, {3, 5.5, 1.0}};
+    EXPECT_TRUE(cornersOverlap(pastTheTurn));
+}
+
 TEST(Charts, UnsharedCornersAreMatchedByPosition) {
     const TestMesh welded = smoothed(voxelSphere(6));
     TestMesh loose = welded;  // three vertices of its own per triangle, as in an STL file
@@ -556,6 +571,7 @@ TEST(Bake, DilationFillsExactlyTheRequestedRings) {
     for (int rings : {1, 2, 3}) {
         AtlasOptions options;
         options.pack.gutter = 2 * rings;
+        options.pack.mipBlocks = false;  // (blocks fill more: MipBlocksHoldOneChartEach)
         options.bake.dilation = rings;
         const TextureAtlas atlas = buildTextureAtlas(mesh.view(), options);
         const int size = atlas.texture.width, height = atlas.texture.height;
@@ -578,6 +594,51 @@ TEST(Bake, DilationFillsExactlyTheRequestedRings) {
                     }
                 const uint8_t alpha = atlas.texture.texel(x, y).a;
                 ASSERT_EQ(alpha, distance <= rings ? 255 : 0) << x << "," << y << " at distance " << distance;
+            }
+    }
+}
+
+// The default layout on 2 x 2 blocks: every block within one texel of a chart's texels is
+// opaque and near no other chart, so a box-filtered mip level 1, sampled bilinearly anywhere in a
+// chart, reads that chart's colours only; on every family, with a gutter of 2.
+TEST(Bake, MipBlocksHoldOneChartEach) {
+    for (const TestMesh &mesh : families()) {
+        SCOPED_TRACE(mesh.name);
+        AtlasOptions options;
+        options.pack.texelsPerUnit = 8;
+        const TextureAtlas atlas = buildTextureAtlas(mesh.view(), options);
+        ASSERT_EQ(atlas.layout.block, 2);
+        ASSERT_EQ(atlas.layout.gutter, 2);
+        const int width = atlas.texture.width, height = atlas.texture.height;
+        ASSERT_EQ(width % 2, 0);
+        ASSERT_EQ(height % 2, 0);
+        for (const ChartPlacement &p : atlas.layout.placements)
+            ASSERT_TRUE(p.x % 2 == 0 && p.y % 2 == 0);
+        // Per block: the chart whose texels (grown by one) reach it, -1 none, -2 two charts.
+        std::vector<int> owner(size_t(width / 2) * size_t(height / 2), -1);
+        for (size_t f = 0; f < mesh.faceCount(); ++f) {
+            glm::dvec2 q[3];
+            for (int k = 0; k < 3; ++k)
+                q[k] = glm::dvec2(atlas.layout.wedgeUv[3 * f + k]) * glm::dvec2(width, height);
+            const int chart = int(atlas.charts.faceChart[f]);
+            rasterConservative(q[0], q[1], q[2], -1.0 / 256, width, height, [&](int x, int y) {
+                for (int v = std::max(0, y - 1); v <= std::min(height - 1, y + 1); ++v)
+                    for (int u = std::max(0, x - 1); u <= std::min(width - 1, x + 1); ++u) {
+                        int &o = owner[size_t(v / 2) * size_t(width / 2) + size_t(u / 2)];
+                        o = o == -1 || o == chart ? chart : -2;
+                    }
+            });
+        }
+        for (int by = 0; by < height / 2; ++by)
+            for (int bx = 0; bx < width / 2; ++bx) {
+                const int o = owner[size_t(by) * size_t(width / 2) + size_t(bx)];
+                ASSERT_NE(o, -2) << "block " << bx << "," << by << " near two charts";
+                if (o < 0)
+                    continue;
+                for (int k = 0; k < 4; ++k) {
+                    ASSERT_EQ(atlas.texture.texel(2 * bx + k % 2, 2 * by + k / 2).a, 255)
+                        << "block " << bx << "," << by << " not filled";
+                }
             }
     }
 }
