@@ -152,6 +152,7 @@ struct FairingState {
 
     // Step 3, by slot (see sweep_layout.cpp).
     size_t freeSlots = 0;                  // slots of free vertices (and empty ones): whole blocks
+    size_t zeroSlot = 0;                   // the last slot, after the other vertices': offset and along 0
     VertexNormal *vertexNormal = nullptr;  // by vertex
     uint32_t *vertexAt = nullptr;          // free slot -> vertex, kNone when empty
     uint32_t *slotNeighbours = nullptr;    // kRegularValence byte offsets per free slot

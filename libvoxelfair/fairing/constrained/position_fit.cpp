@@ -20,7 +20,10 @@
 // Contract: fitFreeVertices (reads vertexNormal, input, kind; fills fit, regularBlock, offset's
 // alongNormal) prepares one pass; sweep(forward) runs one Gauss-Seidel sweep, edge-line vertices
 // then free ones, in slot order or its reverse, each clamped into its cell as it moves; finish
-// writes input + offset to the free and edge-line vertices and the report's counts.
+// writes input + offset to the free and edge-line vertices and the report's counts. removeDrift
+// (step 5 of constrained_fairing.h) averages each vertex's n . d with its neighbours' `rounds`
+// times (Jacobi, over slots: regular blocks read their padded neighbour lists, the rest their
+// corner lists; the same sums in the same order either way) and takes that mean off along n.
 #include "fairing/constrained/fairing_state.h"
 
 #include <algorithm>
@@ -190,25 +193,48 @@ VOXELFAIR_NOINLINE void finish(FairingState<kQuads> &s) {
 
 template <bool kQuads>
 VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds) {
-    const size_t V = s.V;
+    const size_t V = s.V, slots = s.zeroSlot + 1, blocks = s.freeSlots / 4;
     const uint32_t *const start = s.vertexStart, *const next = s.vertexNext, *const rank = s.rank;
+    const uint32_t *const vertexAt = s.vertexAt, *const neighbours = s.slotNeighbours;
+    const uint8_t *const regular = s.regularBlock;
     const VertexKind *const kind = s.kind;
     const VertexNormal *const normal = s.vertexNormal;
     Offset *const offset = s.offset;
-    // n . d per vertex (0 for those that do not move), averaged with the neighbours' `rounds`
-    // times (Jacobi).
-    float *along = s.scratch.template take<float>(V), *smooth = s.scratch.template take<float>(V);
-    float *const weight = s.scratch.template take<float>(V);
+    // n . d per vertex (0 for those that do not move), by slot, averaged with the neighbours'
+    // `rounds` times (Jacobi). Empty slots and the zero slot have weight 0 and stay 0.
+    float *along = s.scratch.template take<float>(slots), *smooth = s.scratch.template take<float>(slots);
+    float *const weight = s.scratch.template take<float>(slots);
+    std::fill(along, along + slots, 0.0f);
+    std::fill(smooth, smooth + slots, 0.0f);
+    std::fill(weight, weight + slots, 0.0f);
+    std::vector<uint32_t> others;  // vertices that are not free, or free outside regular blocks
     for (size_t v = 0; v < V; ++v) {
-        along[v] = isFree(kind[v]) ? glm::dot(normal[v].n, offset[rank[v]].d) : 0.0f;
-        weight[v] = 1.0f / float(1 + start[v + 1] - start[v]);
+        const uint32_t slot = rank[v];
+        if (isFree(kind[v]))
+            along[slot] = glm::dot(normal[v].n, offset[slot].d);
+        weight[slot] = 1.0f / float(1 + start[v + 1] - start[v]);
+        if (!isFree(kind[v]) || !regular[slot / 4])
+            others.push_back(uint32_t(v));
     }
+    // The same sums in the same order as over each vertex's corner list: a regular block's lists
+    // (sweep_layout.cpp) are that list padded with the zero slot, whose 0 adds nothing.
     for (int round = 0; round < rounds; ++round) {
-        for (size_t v = 0; v < V; ++v) {
-            float sum = along[v];
+        for (size_t block = 0; block < blocks; ++block) {
+            if (!regular[block])
+                continue;
+            for (size_t slot = 4 * block; slot < 4 * block + 4; ++slot) {
+                const uint32_t *n = neighbours + kRegularValence * slot;
+                float sum = along[slot];
+                for (uint32_t i = 0; i < kRegularValence; ++i)
+                    sum += along[n[i] / sizeof(Offset)];
+                smooth[slot] = sum * weight[slot];
+            }
+        }
+        for (uint32_t v : others) {
+            float sum = along[rank[v]];
             for (uint32_t j = start[v]; j < start[v + 1]; ++j)
-                sum += along[next[j]];
-            smooth[v] = sum * weight[v];
+                sum += along[rank[next[j]]];
+            smooth[rank[v]] = sum * weight[rank[v]];
         }
         std::swap(along, smooth);
     }
@@ -216,11 +242,13 @@ VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds) {
     for (uint32_t v : s.anchored)
         held[v] = 1;
     const float half = s.half;
-    for (size_t v = 0; v < V; ++v)
-        if (isFree(kind[v]) && (held.empty() || !held[v])) {
-            Offset &o = offset[rank[v]];
-            o.d = glm::clamp(o.d - along[v] * normal[v].n, -half, half);
+    for (size_t slot = 0; slot < s.freeSlots; ++slot) {
+        const uint32_t v = vertexAt[slot];
+        if (v != kNone && (held.empty() || !held[v])) {
+            Offset &o = offset[slot];
+            o.d = glm::clamp(o.d - along[slot] * normal[v].n, -half, half);
         }
+    }
 }
 
 template <bool kQuads>

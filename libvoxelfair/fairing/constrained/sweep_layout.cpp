@@ -72,6 +72,7 @@ VOXELFAIR_NOINLINE void buildSlots(FairingState<kQuads> &s) {
         if (!isFree(kind[v]))
             rank[v] = other++;
     const uint32_t zeroSlot = other;
+    s.zeroSlot = zeroSlot;
 
     s.filtered = s.scratch.template take<glm::vec3>(s.P + 2);
     s.filtered[s.P] = s.filtered[s.P + 1] = glm::vec3(0.0f);
