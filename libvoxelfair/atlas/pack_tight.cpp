@@ -9,18 +9,22 @@
 namespace voxelfair {
 namespace {
 
-// A chart as the search sees it, after a quarter turn: per row, the span between its leftmost
-// and rightmost texel (holes inside a row are not reused), and the rows in decreasing width.
+// A chart as the search sees it, after a quarter turn: its rows' spans, longest first. A row
+// is one span between its leftmost and rightmost texel, or, for a chart with a bitmap
+// (chart_bitmaps.h), each run of its set texels, so holes inside its rows are left free.
+struct Span {
+    int16_t row, left, length;
+};
 struct Shape {
     int width = 0, height = 0;
     std::vector<int16_t> left, right;
-    std::vector<int> widestFirst;
-    int length(int r) const { return right[size_t(r)] - left[size_t(r)] + 1; }
+    std::vector<Span> spans;
 };
 
 // The shape of mask `m` turned by `turns` quarter turns counter-clockwise (turnInMask), or its
 // bounding box.
-void turnedShape(const ChartMask &m, const std::vector<int16_t> &profiles, int turns, bool box, Shape &s) {
+void turnedShape(const ChartMask &m, const std::vector<int16_t> &profiles, int turns, bool box, const uint8_t *bits,
+                 Shape &s) {
     const int16_t *colBottom = m.colBottom(profiles), *colTop = m.colTop(profiles);
     const int16_t *rowLeft = m.rowLeft(profiles), *rowRight = m.rowRight(profiles);
     const int w = m.width, h = m.height;
@@ -41,12 +45,35 @@ void turnedShape(const ChartMask &m, const std::vector<int16_t> &profiles, int t
         default: left = colBottom[w - 1 - r], right = colTop[w - 1 - r]; break;
         }
     }
-    // The widest row admits the fewest places, so it is tested first and the others mostly
+    s.spans.clear();
+    if (box || bits == nullptr) {
+        for (int r = 0; r < s.height; ++r)
+            s.spans.push_back({int16_t(r), s.left[size_t(r)], int16_t(s.right[size_t(r)] - s.left[size_t(r)] + 1)});
+    } else {
+        // The bitmap read through the turn (the profiles' mapping above, texel by texel).
+        auto at = [&](int r, int c) {
+            switch (turns) {
+            case 0: return bits[size_t(r) * w + c];
+            case 1: return bits[size_t(h - 1 - c) * w + r];
+            case 2: return bits[size_t(h - 1 - r) * w + (w - 1 - c)];
+            default: return bits[size_t(c) * w + (w - 1 - r)];
+            }
+        };
+        for (int r = 0; r < s.height; ++r)
+            for (int c = s.left[size_t(r)]; c <= s.right[size_t(r)];) {
+                if (!at(r, c)) {
+                    ++c;
+                    continue;
+                }
+                const int start = c;
+                while (c <= s.right[size_t(r)] && at(r, c))
+                    ++c;
+                s.spans.push_back({int16_t(r), int16_t(start), int16_t(c - start)});
+            }
+    }
+    // The longest span admits the fewest places, so it is tested first and the others mostly
     // confirm it.
-    s.widestFirst.resize(size_t(s.height));
-    std::iota(s.widestFirst.begin(), s.widestFirst.end(), 0);
-    std::stable_sort(s.widestFirst.begin(), s.widestFirst.end(),
-                     [&](int a, int b) { return s.length(a) > s.length(b); });
+    std::stable_sort(s.spans.begin(), s.spans.end(), [](const Span &a, const Span &b) { return a.length > b.length; });
 }
 
 // The free texels of a width x height atlas, row by row. run(y)[x] > 0: x is free and starts a free run
@@ -132,29 +159,29 @@ private:
 // on, with its top below `topLimit`. Returns true with (y, x) set; false with y at the first row
 // not searched.
 bool lowestFit(const FreeRuns &runs, const Shape &shape, int side, int height, int topLimit, int &y, int &x) {
-    const int wr = shape.widestFirst[0], wrLength = shape.length(wr);
+    const Span &wr = shape.spans[0];
     for (; y + shape.height <= height && y + shape.height < topLimit; ++y, x = 0) {
-        // Every row of the chart needs a long enough run somewhere in its atlas row.
+        // Every span of the chart needs a long enough run somewhere in its atlas row.
         bool possible = true;
-        for (int r : shape.widestFirst)
-            if (runs.widest(y + r) < shape.length(r)) {
+        for (const Span &sp : shape.spans)
+            if (runs.widest(y + sp.row) < sp.length) {
                 possible = false;
                 break;
             }
         if (!possible)
             continue;
         while (x + shape.width <= side) {
-            const int p = runs.nextRun(y + wr, x + shape.left[size_t(wr)], wrLength);
+            const int p = runs.nextRun(y + wr.row, x + wr.left, wr.length);
             if (p < 0)
                 break;
-            x = p - shape.left[size_t(wr)];
+            x = p - wr.left;
             if (x + shape.width > side)
                 break;
             bool fits = true;
-            for (size_t k = 1; k < shape.widestFirst.size(); ++k) {
-                const int r = shape.widestFirst[k];
-                const int v = runs.at(y + r, x + shape.left[size_t(r)]);
-                if (v < shape.length(r)) {
+            for (size_t k = 1; k < shape.spans.size(); ++k) {
+                const Span &sp = shape.spans[k];
+                const int v = runs.at(y + sp.row, x + sp.left);
+                if (v < sp.length) {
                     x += v > 0 ? v + 1 : -v;  // past the obstacle this row met
                     fits = false;
                     break;
@@ -170,7 +197,7 @@ bool lowestFit(const FreeRuns &runs, const Shape &shape, int side, int height, i
 }  // namespace
 
 TightPacking packTight(const ChartMasks &masks, int side, int height, bool allowTurns,
-                       std::vector<ChartPlacement> &placements) {
+                       std::vector<ChartPlacement> &placements, const ChartBitmaps *bitmaps) {
     TightPacking result;
     const size_t charts = masks.charts.size();
     placements.assign(charts, ChartPlacement{});
@@ -198,6 +225,12 @@ TightPacking packTight(const ChartMasks &masks, int side, int height, bool allow
             needed += area(c);
             continue;
         }
+        if (bitmaps && bitmaps->has(c)) {
+            const uint8_t *bits = bitmaps->of(c);
+            for (size_t k = 0; k < size_t(m.width) * size_t(m.height); ++k)
+                needed += bits[k];
+            continue;
+        }
         const int16_t *l = m.rowLeft(masks.profiles), *r = m.rowRight(masks.profiles);
         for (int y = 0; y < m.height; ++y)
             needed += r[y] - l[y] + 1;
@@ -212,10 +245,11 @@ TightPacking packTight(const ChartMasks &masks, int side, int height, bool allow
         const bool box = area(c) < shapedArea;
         int bestTop = INT32_MAX;
         for (int turns = 0; turns < (allowTurns ? (box ? 2 : 4) : 1); ++turns) {
-            turnedShape(masks.charts[c], masks.profiles, turns, box, shape);
+            turnedShape(masks.charts[c], masks.profiles, turns, box,
+                        bitmaps && bitmaps->has(c) ? bitmaps->of(c) : nullptr, shape);
             if (shape.width > side || shape.height > height)
                 continue;
-            int y = std::max(0, runs.firstRow(shape.length(shape.widestFirst[0])) - shape.widestFirst[0]), x = 0;
+            int y = std::max(0, runs.firstRow(shape.spans[0].length) - shape.spans[0].row), x = 0;
             std::pair<int, int> *cursor = nullptr;
             if (box) {
                 cursor =
@@ -235,11 +269,11 @@ TightPacking packTight(const ChartMasks &masks, int side, int height, bool allow
         if (bestTop == INT32_MAX)
             return result;
         result.top = std::max(result.top, bestTop);
-        for (int r = 0; r < best.height; ++r)
-            result.placedRoom += size_t(best.length(r));
         const ChartPlacement &p = placements[c];
-        for (int r = 0; r < best.height; ++r)
-            runs.take(p.y + r, p.x + best.left[size_t(r)], p.x + best.right[size_t(r)]);
+        for (const Span &sp : best.spans) {
+            result.placedRoom += size_t(sp.length);
+            runs.take(p.y + sp.row, p.x + sp.left, p.x + sp.left + sp.length - 1);
+        }
     }
     result.fits = true;
     return result;

@@ -5,11 +5,12 @@
 // Charts go largest first. Each goes to the lowest row, then leftmost column, where its mask
 // fits among the charts already placed, holes between them included, trying the four quarter
 // turns and keeping the one whose top ends lowest. A chart's row is taken as the span between
-// its leftmost and rightmost texel. Charts smaller than 1/1024 of the texture (the paper's
+// its leftmost and rightmost texel, or with a bitmap (chart_bitmaps.h) as its runs of texels. Charts smaller than 1/1024 of the texture (the paper's
 // "micro partitions", thousands on voxel models) go in as their bounding boxes, which lets the
 // search for each box size resume where the previous one stopped.
 #pragma once
 
+#include "atlas/chart_bitmaps.h"
 #include "atlas/chart_masks.h"
 
 #include <vector>
@@ -26,8 +27,9 @@ struct TightPacking {
     int top = 0;
 };
 
-// Packs into a side x height rectangle, side the width (both <= 16383).
+// Packs into a side x height rectangle, side the width (both <= 16383). Charts with a bitmap
+// (and not small enough to go in as boxes) leave the holes inside their rows free.
 TightPacking packTight(const ChartMasks &masks, int side, int height, bool allowTurns,
-                       std::vector<ChartPlacement> &placements);
+                       std::vector<ChartPlacement> &placements, const ChartBitmaps *bitmaps = nullptr);
 
 }  // namespace voxelfair

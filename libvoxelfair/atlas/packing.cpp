@@ -17,11 +17,15 @@ namespace {
 
 constexpr int kMaxSide = 16384;  // the packers keep texel rows and columns in int16
 
+// Charts of at least this many blocks get a bitmap (chart_bitmaps.h): smaller ones gain little.
+constexpr int64_t kLeastBitmapBlocks = 64;
+
 // Masks in texels and, with mipBlocks, on 2 x 2 blocks (what the packer then sees); placements
 // in texels either way.
 struct Packing {
     int block = 1;
     ChartMasks masks, blocks;
+    ChartBitmaps bitmaps;  // of the larger charts, with blocks
     std::vector<ChartPlacement> placements;
     const ChartMasks &packed() const { return block > 1 ? blocks : masks; }
 };
@@ -29,8 +33,10 @@ struct Packing {
 bool rasterize(const AtlasCharts &charts, double density, int padding, int maxSide, Packing &out) {
     if (!rasterizeChartMasks(charts, density, padding, maxSide, out.masks))
         return false;
-    if (out.block > 1)
+    if (out.block > 1) {
         coarsenChartMasks(out.masks, out.blocks);
+        rasterizeChartBitmaps(charts, out.masks, out.blocks, kLeastBitmapBlocks, out.bitmaps);
+    }
     return true;
 }
 
@@ -52,7 +58,8 @@ Fit place(Packing &packing, PackMode mode, int side, int height, bool turns) {
     if (mode == PackMode::Tight) {
         const int b = packing.block, units = side / b, rows = height / b;  // in blocks
         const double square = double(units) * rows;
-        const TightPacking t = packTight(masks, units, rows, turns, placements);
+        const TightPacking t =
+            packTight(masks, units, rows, turns, placements, packing.block > 1 ? &packing.bitmaps : nullptr);
         for (ChartPlacement &p : placements)
             p.x *= b, p.y *= b;
         return {t.fits, 0, double(t.room) / square, double(t.placedRoom) / square, double(t.top) / rows};
@@ -104,18 +111,29 @@ double fillScale(const Packing &packing, int side, int height, double efficiency
     side /= b, height /= b;                               // in mask units
     const int64_t boxed = int64_t(side) * height / 1024;  // as pack_tight.cpp
     const double rim = (2.0 * masks.padding + b) / b;
+    // Each chart's room now: its box when packed as one, else its rows' spans, or its bitmap's blocks.
+    std::vector<double> now(masks.charts.size());
+    for (size_t c = 0; c < masks.charts.size(); ++c) {
+        const ChartMask &m = masks.charts[c];
+        now[c] = double(m.width) * m.height;
+        if (int64_t(m.width) * m.height < boxed)
+            continue;
+        now[c] = 0;
+        if (b > 1 && packing.bitmaps.has(c)) {
+            const uint8_t *bits = packing.bitmaps.of(c);
+            for (size_t k = 0; k < size_t(m.width) * size_t(m.height); ++k)
+                now[c] += bits[k];
+            continue;
+        }
+        const int16_t *l = m.rowLeft(masks.profiles), *r = m.rowRight(masks.profiles);
+        for (int y = 0; y < m.height; ++y)
+            now[c] += std::max(0, r[y] - l[y] + 1);
+    }
     auto room = [&](double scale) {
         double total = 0;
-        for (const ChartMask &m : masks.charts) {
-            const double w = m.width, h = m.height;
-            double now = w * h;
-            if (int64_t(m.width) * m.height >= boxed) {
-                now = 0;
-                const int16_t *l = m.rowLeft(masks.profiles), *r = m.rowRight(masks.profiles);
-                for (int y = 0; y < m.height; ++y)
-                    now += std::max(0, r[y] - l[y] + 1);
-            }
-            total += now * (std::max(0.0, w - rim) * scale + rim) * (std::max(0.0, h - rim) * scale + rim) / (w * h);
+        for (size_t c = 0; c < masks.charts.size(); ++c) {
+            const double w = masks.charts[c].width, h = masks.charts[c].height;
+            total += now[c] * (std::max(0.0, w - rim) * scale + rim) * (std::max(0.0, h - rim) * scale + rim) / (w * h);
         }
         return total;
     };
