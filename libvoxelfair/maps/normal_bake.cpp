@@ -121,10 +121,85 @@ private:
     std::vector<uint32_t> start_, faces_;
 };
 
-inline uint8_t encodeFast(float c) { return uint8_t(std::clamp(int(c * 127.5f + 128.0f), 0, 255)); }
 
 constexpr int kBandRows = 32;
 constexpr uint8_t kFromSource = 2;  // a state bit beside kTexelPainted (texel_dilation.h)
+
+inline uint8_t encodeFast(float c) { return uint8_t(std::clamp(int(c * 127.5f + 128.0f), 0, 255)); }
+
+// A target face's shading frame: corner normals and tangents, the bitangent sign.
+struct TargetFrame {
+    float n[3][3], t[3][3];  // [corner][axis]
+    float sign;
+};
+
+// encodeFast without a branch (NaN -> 0), for the vectorised loop.
+inline int encodeLane(float c) {
+    const float v = c * 127.5f + 128.0f, low = v > 0.0f ? v : 0.0f;
+    return int(low < 255.0f ? low : 255.0f);
+}
+
+// The centre texels of one target face in one band, gathered for one vectorised solve: weights
+// (l1, l2; l0 = 1 - l1 - l2), the source normal (zero: none), then the results.
+struct TexelBatch {
+    std::vector<float> l1, l2, nx, ny, nz;
+    std::vector<uint32_t> colour;  // RGBA8 as one little-endian word
+    std::vector<uint8_t> state;
+    std::vector<uint32_t> stateIndex, imageIndex;  // y * width + x, (height - 1 - y) * width + x
+    size_t size = 0;
+    void push(float w1, float w2, const glm::vec3 &n, uint32_t s, uint32_t image) {
+        if (size == l1.size()) {
+            const size_t grown = std::max<size_t>(256, 2 * size);
+            for (auto *v : {&l1, &l2, &nx, &ny, &nz})
+                v->resize(grown);
+            colour.resize(grown), state.resize(grown), stateIndex.resize(grown), imageIndex.resize(grown);
+        }
+        l1[size] = w1, l2[size] = w2, nx[size] = n.x, ny[size] = n.y, nz[size] = n.z;
+        stateIndex[size] = s, imageIndex[size] = image;
+        ++size;
+    }
+};
+
+// Solves the texels of a batch: each solved texel's colour and state; a texel without a
+// frame (zero normal or tangent, singular basis, zero source normal: NaNs or zeros below, which
+// fail the tests) gets kTexelPainted alone. Branch-free, so that the compiler vectorises it.
+void solveBatch(const TargetFrame &frame, TexelBatch &batch) {
+    const size_t count = batch.size;
+    const TargetFrame fr = frame;
+    const float *__restrict bl1 = batch.l1.data(), *__restrict bl2 = batch.l2.data(),
+                            *__restrict snx = batch.nx.data(), *__restrict sny = batch.ny.data(),
+                            *__restrict snz = batch.nz.data();
+    uint32_t *__restrict out = batch.colour.data();
+    uint8_t *__restrict state = batch.state.data();
+    for (size_t i = 0; i < count; ++i) {
+        const float l1 = bl1[i], l2 = bl2[i], l0 = 1.0f - l1 - l2;
+        float N[3], T[3];
+        for (int a = 0; a < 3; ++a) {
+            N[a] = l0 * fr.n[0][a] + l1 * fr.n[1][a] + l2 * fr.n[2][a];
+            T[a] = l0 * fr.t[0][a] + l1 * fr.t[1][a] + l2 * fr.t[2][a];
+        }
+        const float ni = 1.0f / std::sqrt(N[0] * N[0] + N[1] * N[1] + N[2] * N[2]),
+                    ti = 1.0f / std::sqrt(T[0] * T[0] + T[1] * T[1] + T[2] * T[2]);
+        for (int a = 0; a < 3; ++a)
+            N[a] *= ni, T[a] *= ti;
+        // B = sign cross(N, T); rows of the inverse of the column matrix [T B N]: cross products
+        // over its determinant.
+        const float B[3] = {fr.sign * (N[1] * T[2] - N[2] * T[1]), fr.sign * (N[2] * T[0] - N[0] * T[2]),
+                            fr.sign * (N[0] * T[1] - N[1] * T[0])};
+        const float r0[3] = {B[1] * N[2] - B[2] * N[1], B[2] * N[0] - B[0] * N[2], B[0] * N[1] - B[1] * N[0]};
+        const float r1[3] = {N[1] * T[2] - N[2] * T[1], N[2] * T[0] - N[0] * T[2], N[0] * T[1] - N[1] * T[0]};
+        const float r2[3] = {T[1] * B[2] - T[2] * B[1], T[2] * B[0] - T[0] * B[2], T[0] * B[1] - T[1] * B[0]};
+        const float n[3] = {snx[i], sny[i], snz[i]};
+        const float x = r0[0] * n[0] + r0[1] * n[1] + r0[2] * n[2], y = r1[0] * n[0] + r1[1] * n[1] + r1[2] * n[2],
+                    z = r2[0] * n[0] + r2[1] * n[1] + r2[2] * n[2];
+        const float det = T[0] * r0[0] + T[1] * r0[1] + T[2] * r0[2], length = x * x + y * y + z * z;
+        const int solved = int(std::fabs(det) > 1e-6f) & int(length > 0.0f);
+        const float scale = std::copysign(1.0f, det) / std::sqrt(length);
+        out[i] = uint32_t(encodeLane(x * scale)) | uint32_t(encodeLane(y * scale)) << 8 |
+                 uint32_t(encodeLane(z * scale)) << 16 | 0xFF000000u;
+        state[i] = uint8_t(kTexelPainted | (solved << 1));
+    }
+}
 
 // Target faces by the bands of rows their UV triangles may touch (conservatively), in face order.
 struct FaceBands {
@@ -159,6 +234,44 @@ FaceBands faceBands(const NormalBakeMesh &target, int width, int height) {
             for (size_t b = b0; b <= b1; ++b)
                 out.faces[fill[b]++] = uint32_t(f);
     return out;
+}
+
+// Calls span(y, xl, xr) for the rows y in [r0, r1) with texel centres (x + 0.5, y + 0.5) in the
+// UV triangle uv (scaled to texels), x in [xl, xr] within the image: a plain scanline fill in
+// floats, for the walk's starting faces (where neighbouring triangles share an edge, a centre
+// on it may be given to either; both are right starts).
+template <class Span>
+void underSpans(const glm::vec2 *uv, int width, int height, int r0, int r1, Span &&span) {
+    const glm::vec2 q[3] = {uv[0] * glm::vec2(float(width), float(height)), uv[1] * glm::vec2(float(width), float(height)),
+                            uv[2] * glm::vec2(float(width), float(height))};
+    const float area = (q[1].x - q[0].x) * (q[2].y - q[0].y) - (q[1].y - q[0].y) * (q[2].x - q[0].x);
+    if (!(area != 0.0f) || !std::isfinite(area))
+        return;
+    const float lo = std::min({q[0].y, q[1].y, q[2].y}), hi = std::max({q[0].y, q[1].y, q[2].y});
+    const int y0 = std::max(r0, int(std::ceil(lo - 0.5f))), y1 = std::min(r1 - 1, int(std::floor(hi - 0.5f)));
+    for (int y = y0; y <= y1; ++y) {
+        const float cy = float(y) + 0.5f;
+        float xl = -1.0f, xr = float(width);
+        bool empty = false;
+        for (int k = 0; k < 3; ++k) {
+            // Edge a -> b: inside where sign(area) * cross(b - a, c - a) >= 0, linear in c.x:
+            // ex * (cy - a.y) - ey * (cx - a.x) >= 0 (times the sign).
+            const glm::vec2 a = q[k], b = q[(k + 1) % 3];
+            const float ex = b.x - a.x, ey = b.y - a.y;
+            const float s = area > 0.0f ? 1.0f : -1.0f;
+            const float slope = -s * ey, offset = s * (ex * (cy - a.y) + ey * a.x);  // slope * cx + offset >= 0
+            if (slope > 0.0f)
+                xl = std::max(xl, -offset / slope);
+            else if (slope < 0.0f)
+                xr = std::min(xr, -offset / slope);
+            else if (offset < 0.0f)
+                empty = true;
+        }
+        // Texels whose centre x + 0.5 lies in [xl, xr].
+        const int a = std::max(0, int(std::ceil(xl - 0.5f))), b = std::min(width - 1, int(std::floor(xr - 0.5f)));
+        if (!empty && a <= b)
+            span(y, a, b);
+    }
 }
 
 // The source with its faces renumbered by the atlas cell (kSortCell texels square) of their UV
@@ -262,19 +375,15 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
                   reinterpret_cast<uint32_t *>(rgba) + size_t(height - r0) * size_t(width),
                   0xFFFF8080u);  // bytes 128, 128, 255, 255
         glm::dvec2 q[3];
-        // The source face under each texel centre of the band (its UV triangle holds the centre):
-        // where the walk of a target texel starts, so that it follows the atlas' correspondence
-        // and stays short.
+        // The source face under each texel centre of the band (its UV triangle holds the centre).
         std::vector<uint32_t> under(size_t(r1 - r0) * size_t(width), UINT32_MAX);
-        for (uint32_t i = sourceBands.start[band]; i < sourceBands.start[band + 1]; ++i) {
-            const uint32_t f = sourceBands.faces[i];
-            loadUv(sorted->mesh, f, width, height, q);
-            rasterCentreSpans(q[0], q[1], q[2], width, height, [&](int y, int xl, int xr) {
-                if (y >= r0 && y < r1)
-                    std::fill(&under[size_t(y - r0) * size_t(width) + size_t(xl)],
-                              &under[size_t(y - r0) * size_t(width) + size_t(xr)] + 1, f);
-            });
-        }
+        for (uint32_t i = sourceBands.start[band]; i < sourceBands.start[band + 1]; ++i)
+            underSpans(sorted->mesh.wedgeUv + 3 * size_t(sourceBands.faces[i]), width, height, r0, r1,
+                       [&](int y, int xl, int xr) {
+                           std::fill_n(&under[size_t(y - r0) * size_t(width) + size_t(xl)], xr - xl + 1,
+                                       sourceBands.faces[i]);
+                       });
+        TexelBatch batch;
         for (uint32_t i = bands.start[band]; i < bands.start[band + 1]; ++i) {
             const size_t f = bands.faces[i];
             loadUv(target, f, width, height, q);
@@ -294,64 +403,92 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
                 w += out.cornerTangents[3 * f + size_t(k)].w;
             }
             const float sign = w < 0.0f ? -1.0f : 1.0f;
-            sorted->forRuns(glm::min(q[0], glm::min(q[1], q[2])), glm::max(q[0], glm::max(q[1], q[2])),
-                            [&](uint32_t first, uint32_t last) { walk->prefetch(first, last); });
-            uint32_t hitFace = UINT32_MAX;  // where the walk starts: the last answer, first the face under the UV
-            // Texel (x, y) at barycentric weights l: its state.
-            auto bake = [&](int x, int y, float l0, float l1, float l2) -> uint8_t {
-                // The first walk of the face in this band starts at the source face under the
-                // texel's point of the target's UV triangle (weights clamped onto it: an edge
-                // texel's own UV may lie in the gutter or in another chart).
+            TargetFrame targetFrame;
+            for (int k = 0; k < 3; ++k)
+                for (int a = 0; a < 3; ++a)
+                    targetFrame.n[k][a] = tn[k][a], targetFrame.t[k][a] = tt[k][a];
+            targetFrame.sign = sign;
+            // Each texel's walk starts from the source face under its UV (the atlas'
+            // correspondence), where the projection most often is; failing that, the previous
+            // texel's answer is taken if its walk started from the same face and it holds the
+            // projection (the walk's answer from there, found without walking). A texel with no
+            // source face under it starts from the previous answer, the first from the UV grid.
+            uint32_t hitFace = UINT32_MAX, hitStart = UINT32_MAX;
+            // The source normal at texel (x, y) with weights l; false when no source face is near.
+            auto sourceNormal = [&](int x, int y, float l0, float l1, float l2, glm::vec3 &n) {
                 const uint32_t start = under[size_t(y - r0) * size_t(width) + size_t(x)];
-                if (start != UINT32_MAX)
-                    hitFace = start;
-                else if (hitFace == UINT32_MAX && (hitFace = grid->find(double(l0) * q[0] + double(l1) * q[1] +
-                                                                        double(l2) * q[2])) == UINT32_MAX)
-                    return kTexelPainted;
-                glm::vec3 N = l0 * tn[0] + l1 * tn[1] + l2 * tn[2];
-                const SurfaceWalk::Hit hit = walk->project(l0 * tp[0] + l1 * tp[1] + l2 * tp[2], hitFace, N, 64);
-                hitFace = hit.face;
-                const glm::vec3 n = walk->normalAt(hit);
-                glm::vec3 T = l0 * tt[0] + l1 * tt[1] + l2 * tt[2];
-                const float nl = glm::dot(N, N), tl = glm::dot(T, T);
-                if (!(nl > 0.0f && tl > 0.0f))
-                    return kTexelPainted;
-                N *= 1.0f / std::sqrt(nl), T *= 1.0f / std::sqrt(tl);
-                const glm::vec3 B = sign * glm::cross(N, T);
-                // Rows of the inverse of the column matrix [T B N]: cross products over its determinant.
-                const glm::vec3 r0 = glm::cross(B, N), r1 = glm::cross(N, T), r2 = glm::cross(T, B);
-                const glm::vec3 solved(glm::dot(r0, n), glm::dot(r1, n), glm::dot(r2, n));
-                const float det = glm::dot(T, r0), length = glm::dot(solved, solved);
-                if (!(std::fabs(det) > 1e-6f) || !(length > 0.0f))
-                    return kTexelPainted;
-                const glm::vec3 c = solved * ((det < 0.0f ? -1.0f : 1.0f) / std::sqrt(length));
-                uint8_t *p = rgba + (size_t(height - 1 - y) * size_t(width) + size_t(x)) * 4;
-                p[0] = encodeFast(c.x), p[1] = encodeFast(c.y), p[2] = encodeFast(c.z);
-                return uint8_t(kTexelPainted | kFromSource);
+                const glm::vec3 p = l0 * tp[0] + l1 * tp[1] + l2 * tp[2];
+                glm::vec3 w;
+                if (start != UINT32_MAX) {
+                    const bool again = start == hitStart;
+                    hitStart = start;
+                    if (walk->holds(p, start, w)) {
+                        hitFace = start;
+                    } else if (!again || !walk->holds(p, hitFace, w)) {
+                        const SurfaceWalk::Hit hit = walk->project(p, start, l0 * tn[0] + l1 * tn[1] + l2 * tn[2], 64);
+                        hitFace = hit.face, w = hit.weights;
+                    }
+                } else {
+                    hitStart = UINT32_MAX;
+                    if (hitFace == UINT32_MAX && (hitFace = grid->find(double(l0) * q[0] + double(l1) * q[1] +
+                                                                       double(l2) * q[2])) == UINT32_MAX)
+                        return false;
+                    if (!walk->holds(p, hitFace, w)) {
+                        const SurfaceWalk::Hit hit = walk->project(p, hitFace, l0 * tn[0] + l1 * tn[1] + l2 * tn[2], 64);
+                        hitFace = hit.face, w = hit.weights;
+                    }
+                }
+                n = walk->normalAt(hitFace, w);
+                return true;
             };
-            // Centres inside: the weights step along the row.
-            rasterCentreSpans(q[0], q[1], q[2], width, height, [&](int y, int xl, int xr) {
+            batch.size = 0;
+            rasterRows(q[0], q[1], q[2], kMargin, width, height, [&](int y, int cl, int cr, int zl, int zr) {
                 if (y < r0 || y >= r1)
                     return;
-                const double px = xl + 0.5 - q[0].x, py = y + 0.5 - q[0].y;
-                double l1 = a1 * px + b1 * py, l2 = a2 * px + b2 * py;
-                uint8_t *row = states + size_t(y) * size_t(width);
-                for (int x = xl; x <= xr; ++x, l1 += a1, l2 += a2)
-                    row[x] = bake(x, y, float(1.0 - l1 - l2), float(l1), float(l2));
+                const uint32_t stateRow = uint32_t(y) * uint32_t(width),
+                               imageRow = uint32_t(height - 1 - y) * uint32_t(width);
+                const double py = y + 0.5 - q[0].y;
+                // Centres inside: the weights step along the row.
+                if (zl <= zr) {
+                    const double px = zl + 0.5 - q[0].x;
+                    double l1 = a1 * px + b1 * py, l2 = a2 * px + b2 * py;
+                    for (int x = zl; x <= zr; ++x, l1 += a1, l2 += a2) {
+                        glm::vec3 n(0.0f);
+                        const float w1 = float(l1), w2 = float(l2);
+                        if (!sourceNormal(x, y, 1.0f - w1 - w2, w1, w2, n))
+                            n = glm::vec3(0.0f);
+                        batch.push(w1, w2, n, stateRow + uint32_t(x), imageRow + uint32_t(x));
+                    }
+                }
+                // Texels the triangle only overlaps, if no centre claimed them: weights clamped
+                // onto it. (No centre of this face lies among them, so gathering them with the
+                // centres keeps the order of claims.)
+                for (int x = cl; x <= cr; ++x) {
+                    if (x == zl && zl <= zr)
+                        x = zr + 1;
+                    if (x > cr)
+                        break;
+                    if (states[stateRow + uint32_t(x)] != 0)
+                        continue;
+                    const double px = x + 0.5 - q[0].x;
+                    float l1 = float(a1 * px + b1 * py), l2 = float(a2 * px + b2 * py), l0 = 1.0f - l1 - l2;
+                    l0 = std::max(l0, 0.0f), l1 = std::max(l1, 0.0f), l2 = std::max(l2, 0.0f);
+                    const float sum = l0 + l1 + l2;
+                    if (sum > 0)
+                        l0 /= sum, l1 /= sum, l2 /= sum;
+                    glm::vec3 n(0.0f);
+                    if (!sourceNormal(x, y, l0, l1, l2, n))
+                        n = glm::vec3(0.0f);
+                    batch.push(l1, l2, n, stateRow + uint32_t(x), imageRow + uint32_t(x));
+                }
             });
-            // Texels the triangle only overlaps, if no centre claimed them: weights clamped onto it.
-            rasterConservative(q[0], q[1], q[2], kMargin, width, height, [&](int x, int y) {
-                uint8_t &texelState = states[size_t(y) * size_t(width) + size_t(x)];
-                if (y < r0 || y >= r1 || texelState != 0)
-                    return;
-                const double px = x + 0.5 - q[0].x, py = y + 0.5 - q[0].y;
-                float l1 = float(a1 * px + b1 * py), l2 = float(a2 * px + b2 * py), l0 = 1.0f - l1 - l2;
-                l0 = std::max(l0, 0.0f), l1 = std::max(l1, 0.0f), l2 = std::max(l2, 0.0f);
-                const float sum = l0 + l1 + l2;
-                if (sum > 0)
-                    l0 /= sum, l1 /= sum, l2 /= sum;
-                texelState = bake(x, y, l0, l1, l2);
-            });
+            solveBatch(targetFrame, batch);
+            uint32_t *const image = reinterpret_cast<uint32_t *>(rgba);
+            for (size_t t = 0; t < batch.size; ++t) {
+                states[batch.stateIndex[t]] = batch.state[t];
+                if (batch.state[t] & kFromSource)
+                    image[batch.imageIndex[t]] = batch.colour[t];
+            }
         }
         size_t fromSource = 0, painted = 0;  // local: the bands' counters share cache lines
         for (size_t t = size_t(r0) * size_t(width); t < size_t(r1) * size_t(width); ++t) {
@@ -365,22 +502,26 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
         out.texelsBaked += baked[b], out.texelsWithoutSource += flat[b];
 
     // The gutter: renormalised mean of the painted neighbours.
-    dilateTexels(width, height, state, options.dilation, options.threads, [&](int x, int y) {
+    const uint8_t *const painted = state.data();
+    uint8_t *const image = out.rgba.data();
+    dilateTexels(width, height, state, options.dilation, options.threads, [painted, image, width, height](int x, int y) {
         // The mean of the decoded neighbours, (2 c - 255) / 255 each, up to its scale: integers.
         int sx = 0, sy = 0, sz = 0, n = 0;
-        for (int ny = std::max(y - 1, 0); ny <= std::min(y + 1, height - 1); ++ny)
+        for (int ny = std::max(y - 1, 0); ny <= std::min(y + 1, height - 1); ++ny) {
+            const uint8_t *const row = painted + size_t(ny) * size_t(width);
+            const uint8_t *const colours = image + size_t(height - 1 - ny) * size_t(width) * 4;
             for (int nx = std::max(x - 1, 0); nx <= std::min(x + 1, width - 1); ++nx) {
-                if (!(state[size_t(ny) * size_t(width) + size_t(nx)] & kTexelPainted))
-                    continue;
-                const uint8_t *p = &out.rgba[(size_t(height - 1 - ny) * size_t(width) + size_t(nx)) * 4];
-                sx += p[0], sy += p[1], sz += p[2], ++n;
+                const int m = row[nx] & kTexelPainted;  // 0 or 1: branch-free sums
+                const uint8_t *p = colours + size_t(nx) * 4;
+                sx += m * p[0], sy += m * p[1], sz += m * p[2], n += m;
             }
+        }
         const glm::vec3 sum(float(2 * sx - 255 * n), float(2 * sy - 255 * n), float(2 * sz - 255 * n));
         const float length = glm::length(sum);
         if (!(length > 0.0f))
             return false;
         const glm::vec3 c = sum / length;
-        uint8_t *p = &out.rgba[(size_t(height - 1 - y) * size_t(width) + size_t(x)) * 4];
+        uint8_t *p = image + (size_t(height - 1 - y) * size_t(width) + size_t(x)) * 4;
         p[0] = encodeFast(c.x), p[1] = encodeFast(c.y), p[2] = encodeFast(c.z);
         return true;
     });

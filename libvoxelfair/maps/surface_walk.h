@@ -36,6 +36,15 @@ public:
         uint32_t face;
         glm::vec3 weights;  // barycentric, >= 0, summing to 1
     };
+    // True when p's projection onto face `face`'s plane falls inside it, near the plane (the
+    // walk's answer when it starts there); w gets its weights either way. The bakers' fast path.
+    bool holds(const glm::vec3 &p, uint32_t face, glm::vec3 &w) const {
+        const Face &f = faces_[face];
+        const glm::vec3 d = p - f.origin;
+        const float w1 = glm::dot(d, f.dual1), w2 = glm::dot(d, f.dual2), height = glm::dot(d, f.normal);
+        w = glm::vec3(1.0f - w1 - w2, w1, w2);
+        return (w.x >= 0.0f) & (w1 >= 0.0f) & (w2 >= 0.0f) & (height * height <= f.nearPlane);
+    }
     // `start` must be a face index; at most `maxSteps` moves. Inline: the bakers call it per texel.
     Hit project(const glm::vec3 &p, uint32_t start, const glm::vec3 &facing, int maxSteps = 16) const {
         uint32_t face = start, previous = UINT32_MAX;
@@ -67,9 +76,10 @@ public:
         return closestAround(p, face, facing);
     }
     // The vertex normals interpolated at a hit (not normalised).
-    glm::vec3 normalAt(const Hit &hit) const {
-        const glm::vec3 *n = &cornerNormals_[3 * size_t(hit.face)];
-        return hit.weights.x * n[0] + hit.weights.y * n[1] + hit.weights.z * n[2];
+    glm::vec3 normalAt(const Hit &hit) const { return normalAt(hit.face, hit.weights); }
+    glm::vec3 normalAt(uint32_t face, const glm::vec3 &w) const {
+        const glm::vec3 *n = &cornerNormals_[3 * size_t(face)];
+        return w.x * n[0] + w.y * n[1] + w.z * n[2];
     }
     // Asks the memory system for faces [first, last)'s records ahead of a walk among them (the
     // walk's loads depend on each other; fetched ahead, their misses overlap).
