@@ -337,33 +337,34 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
     out.width = width;
     out.height = height;
 
-    // The target's tangents beside the source's search structures.
-    std::unique_ptr<SortedSource> sorted;
+    // The source's walk (its largest structure) on one thread, the rest on the other.
+    const auto sorted = std::make_unique<SortedSource>(source, width, height);
     std::unique_ptr<UvFaceGrid> grid;
     std::unique_ptr<SurfaceWalk> walk;
     FaceBands bands, sourceBands;
+    std::vector<uint8_t> state;
     {
-        auto structures = [&] {
-            sorted = std::make_unique<SortedSource>(source, width, height);
-            grid = std::make_unique<UvFaceGrid>(sorted->mesh, width, height);
+        auto walkPart = [&] {
             walk = std::make_unique<SurfaceWalk>(source.positions, source.normals, sorted->triangles.data(),
                                                  source.faceCount, source.vertexCount);
             sourceBands = faceBands(sorted->mesh, width, height);
         };
-        if (bandThreads(options.threads, 2) > 1) {
-            std::thread other(structures);
+        auto rest = [&] {
             out.cornerTangents = targetTangents(target);
             bands = faceBands(target, width, height);
+            grid = std::make_unique<UvFaceGrid>(sorted->mesh, width, height);
+            out.rgba.resize(texels * 4);
+            state.assign(texels, 0);
+        };
+        if (bandThreads(options.threads, 2) > 1) {
+            std::thread other(walkPart);
+            rest();
             other.join();
         } else {
-            structures();
-            out.cornerTangents = targetTangents(target);
-            bands = faceBands(target, width, height);
+            walkPart();
+            rest();
         }
     }
-
-    out.rgba.resize(texels * 4);
-    std::vector<uint8_t> state(texels, 0);
     const size_t bandCount = bands.start.size() - 1;
     std::vector<size_t> baked(bandCount, 0), flat(bandCount, 0);
     runBands(bandCount, options.threads, [&](size_t band) {

@@ -7,8 +7,10 @@
 // same UV. The source triangle under a target texel's UV is where the search for its source
 // point starts; the point itself is found by geometry: a walk over the source's triangles
 // (surface_walk.h: the projection onto the local sheet, or the closest facing point where the
-// target is well off the source). The source's interpolated vertex normal n there is what the
-// texel encodes. The target triangle under the texel gives the shading frame a glTF / Blender /
+// target is well off the source). Where the projection falls inside the triangle under the UV
+// (most texels) that is the answer at once; else, if the previous texel of the row started from
+// the same triangle and its answer holds the projection, that answer; else the walk. The
+// source's interpolated vertex normal n there is what the texel encodes. The target triangle under the texel gives the shading frame a glTF / Blender /
 // MikkTSpace pixel shader rebuilds there: N and T interpolated from the target's vertex normals
 // and MikkTSpace tangents (mikktspace.h) and normalised, B = w * cross(N, T). The texel stores
 // the unit solution of x T + y B + z N = n (the exact inverse of that shader), as (c + 1) / 2 in
@@ -22,6 +24,8 @@
 //
 // The texture is split into bands of texel rows baked on `threads` threads (parallel_bands.h);
 // each band walks from its own starting points, so the map is the same for any thread count.
+// Within a band each target triangle's texels are gathered (source normals found one by one),
+// then their frames are solved in one branch-free loop the compiler vectorises.
 #pragma once
 
 #include "base/error.h"
