@@ -121,7 +121,6 @@ private:
     std::vector<uint32_t> start_, faces_;
 };
 
-
 constexpr int kBandRows = 32;
 constexpr uint8_t kFromSource = 2;  // a state bit beside kTexelPainted (texel_dilation.h)
 
@@ -166,9 +165,8 @@ struct TexelBatch {
 void solveBatch(const TargetFrame &frame, TexelBatch &batch) {
     const size_t count = batch.size;
     const TargetFrame fr = frame;
-    const float *__restrict bl1 = batch.l1.data(), *__restrict bl2 = batch.l2.data(),
-                            *__restrict snx = batch.nx.data(), *__restrict sny = batch.ny.data(),
-                            *__restrict snz = batch.nz.data();
+    const float *__restrict bl1 = batch.l1.data(), *__restrict bl2 = batch.l2.data(), *__restrict snx = batch.nx.data(),
+                            *__restrict sny = batch.ny.data(), *__restrict snz = batch.nz.data();
     uint32_t *__restrict out = batch.colour.data();
     uint8_t *__restrict state = batch.state.data();
     for (size_t i = 0; i < count; ++i) {
@@ -242,7 +240,8 @@ FaceBands faceBands(const NormalBakeMesh &target, int width, int height) {
 // on it may be given to either; both are right starts).
 template <class Span>
 void underSpans(const glm::vec2 *uv, int width, int height, int r0, int r1, Span &&span) {
-    const glm::vec2 q[3] = {uv[0] * glm::vec2(float(width), float(height)), uv[1] * glm::vec2(float(width), float(height)),
+    const glm::vec2 q[3] = {uv[0] * glm::vec2(float(width), float(height)),
+                            uv[1] * glm::vec2(float(width), float(height)),
                             uv[2] * glm::vec2(float(width), float(height))};
     const float area = (q[1].x - q[0].x) * (q[2].y - q[0].y) - (q[1].y - q[0].y) * (q[2].x - q[0].x);
     if (!(area != 0.0f) || !std::isfinite(area))
@@ -431,11 +430,12 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
                     }
                 } else {
                     hitStart = UINT32_MAX;
-                    if (hitFace == UINT32_MAX && (hitFace = grid->find(double(l0) * q[0] + double(l1) * q[1] +
-                                                                       double(l2) * q[2])) == UINT32_MAX)
+                    if (hitFace == UINT32_MAX &&
+                        (hitFace = grid->find(double(l0) * q[0] + double(l1) * q[1] + double(l2) * q[2])) == UINT32_MAX)
                         return false;
                     if (!walk->holds(p, hitFace, w)) {
-                        const SurfaceWalk::Hit hit = walk->project(p, hitFace, l0 * tn[0] + l1 * tn[1] + l2 * tn[2], 64);
+                        const SurfaceWalk::Hit hit =
+                            walk->project(p, hitFace, l0 * tn[0] + l1 * tn[1] + l2 * tn[2], 64);
                         hitFace = hit.face, w = hit.weights;
                     }
                 }
@@ -505,27 +505,28 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
     // The gutter: renormalised mean of the painted neighbours.
     const uint8_t *const painted = state.data();
     uint8_t *const image = out.rgba.data();
-    dilateTexels(width, height, state, options.dilation, options.threads, [painted, image, width, height](int x, int y) {
-        // The mean of the decoded neighbours, (2 c - 255) / 255 each, up to its scale: integers.
-        int sx = 0, sy = 0, sz = 0, n = 0;
-        for (int ny = std::max(y - 1, 0); ny <= std::min(y + 1, height - 1); ++ny) {
-            const uint8_t *const row = painted + size_t(ny) * size_t(width);
-            const uint8_t *const colours = image + size_t(height - 1 - ny) * size_t(width) * 4;
-            for (int nx = std::max(x - 1, 0); nx <= std::min(x + 1, width - 1); ++nx) {
-                const int m = row[nx] & kTexelPainted;  // 0 or 1: branch-free sums
-                const uint8_t *p = colours + size_t(nx) * 4;
-                sx += m * p[0], sy += m * p[1], sz += m * p[2], n += m;
-            }
-        }
-        const glm::vec3 sum(float(2 * sx - 255 * n), float(2 * sy - 255 * n), float(2 * sz - 255 * n));
-        const float length = glm::length(sum);
-        if (!(length > 0.0f))
-            return false;
-        const glm::vec3 c = sum / length;
-        uint8_t *p = image + (size_t(height - 1 - y) * size_t(width) + size_t(x)) * 4;
-        p[0] = encodeFast(c.x), p[1] = encodeFast(c.y), p[2] = encodeFast(c.z);
-        return true;
-    });
+    dilateTexels(width, height, state, options.dilation, options.threads,
+                 [painted, image, width, height](int x, int y) {
+                     // The mean of the decoded neighbours, (2 c - 255) / 255 each, up to its scale: integers.
+                     int sx = 0, sy = 0, sz = 0, n = 0;
+                     for (int ny = std::max(y - 1, 0); ny <= std::min(y + 1, height - 1); ++ny) {
+                         const uint8_t *const row = painted + size_t(ny) * size_t(width);
+                         const uint8_t *const colours = image + size_t(height - 1 - ny) * size_t(width) * 4;
+                         for (int nx = std::max(x - 1, 0); nx <= std::min(x + 1, width - 1); ++nx) {
+                             const int m = row[nx] & kTexelPainted;  // 0 or 1: branch-free sums
+                             const uint8_t *p = colours + size_t(nx) * 4;
+                             sx += m * p[0], sy += m * p[1], sz += m * p[2], n += m;
+                         }
+                     }
+                     const glm::vec3 sum(float(2 * sx - 255 * n), float(2 * sy - 255 * n), float(2 * sz - 255 * n));
+                     const float length = glm::length(sum);
+                     if (!(length > 0.0f))
+                         return false;
+                     const glm::vec3 c = sum / length;
+                     uint8_t *p = image + (size_t(height - 1 - y) * size_t(width) + size_t(x)) * 4;
+                     p[0] = encodeFast(c.x), p[1] = encodeFast(c.y), p[2] = encodeFast(c.z);
+                     return true;
+                 });
     return out;
 }
 
