@@ -6,6 +6,7 @@
 #include "maps/parallel_bands.h"
 #include "maps/surface_walk.h"
 #include "maps/texel_dilation.h"
+#include "maps/texel_frames.h"
 
 #include <algorithm>
 #include <cmath>
@@ -125,79 +126,6 @@ constexpr int kBandRows = 32;
 constexpr uint8_t kFromSource = 2;  // a state bit beside kTexelPainted (texel_dilation.h)
 
 inline uint8_t encodeFast(float c) { return uint8_t(std::clamp(int(c * 127.5f + 128.0f), 0, 255)); }
-
-// A target face's shading frame: corner normals and tangents, the bitangent sign.
-struct TargetFrame {
-    float n[3][3], t[3][3];  // [corner][axis]
-    float sign;
-};
-
-// encodeFast without a branch (NaN -> 0), for the vectorised loop.
-inline int encodeLane(float c) {
-    const float v = c * 127.5f + 128.0f, low = v > 0.0f ? v : 0.0f;
-    return int(low < 255.0f ? low : 255.0f);
-}
-
-// The centre texels of one target face in one band, gathered for one vectorised solve: weights
-// (l1, l2; l0 = 1 - l1 - l2), the source normal (zero: none), then the results.
-struct TexelBatch {
-    std::vector<float> l1, l2, nx, ny, nz;
-    std::vector<uint32_t> colour;  // RGBA8 as one little-endian word
-    std::vector<uint8_t> state;
-    std::vector<uint32_t> stateIndex, imageIndex;  // y * width + x, (height - 1 - y) * width + x
-    size_t size = 0;
-    void push(float w1, float w2, const glm::vec3 &n, uint32_t s, uint32_t image) {
-        if (size == l1.size()) {
-            const size_t grown = std::max<size_t>(256, 2 * size);
-            for (auto *v : {&l1, &l2, &nx, &ny, &nz})
-                v->resize(grown);
-            colour.resize(grown), state.resize(grown), stateIndex.resize(grown), imageIndex.resize(grown);
-        }
-        l1[size] = w1, l2[size] = w2, nx[size] = n.x, ny[size] = n.y, nz[size] = n.z;
-        stateIndex[size] = s, imageIndex[size] = image;
-        ++size;
-    }
-};
-
-// Solves the texels of a batch: each solved texel's colour and state; a texel without a
-// frame (zero normal or tangent, singular basis, zero source normal: NaNs or zeros below, which
-// fail the tests) gets kTexelPainted alone. Branch-free, so that the compiler vectorises it.
-void solveBatch(const TargetFrame &frame, TexelBatch &batch) {
-    const size_t count = batch.size;
-    const TargetFrame fr = frame;
-    const float *__restrict bl1 = batch.l1.data(), *__restrict bl2 = batch.l2.data(), *__restrict snx = batch.nx.data(),
-                            *__restrict sny = batch.ny.data(), *__restrict snz = batch.nz.data();
-    uint32_t *__restrict out = batch.colour.data();
-    uint8_t *__restrict state = batch.state.data();
-    for (size_t i = 0; i < count; ++i) {
-        const float l1 = bl1[i], l2 = bl2[i], l0 = 1.0f - l1 - l2;
-        float N[3], T[3];
-        for (int a = 0; a < 3; ++a) {
-            N[a] = l0 * fr.n[0][a] + l1 * fr.n[1][a] + l2 * fr.n[2][a];
-            T[a] = l0 * fr.t[0][a] + l1 * fr.t[1][a] + l2 * fr.t[2][a];
-        }
-        const float ni = 1.0f / std::sqrt(N[0] * N[0] + N[1] * N[1] + N[2] * N[2]),
-                    ti = 1.0f / std::sqrt(T[0] * T[0] + T[1] * T[1] + T[2] * T[2]);
-        for (int a = 0; a < 3; ++a)
-            N[a] *= ni, T[a] *= ti;
-        // B = sign cross(N, T); rows of the inverse of the column matrix [T B N]: cross products
-        // over its determinant.
-        const float B[3] = {fr.sign * (N[1] * T[2] - N[2] * T[1]), fr.sign * (N[2] * T[0] - N[0] * T[2]),
-                            fr.sign * (N[0] * T[1] - N[1] * T[0])};
-        const float r0[3] = {B[1] * N[2] - B[2] * N[1], B[2] * N[0] - B[0] * N[2], B[0] * N[1] - B[1] * N[0]};
-        const float r1[3] = {N[1] * T[2] - N[2] * T[1], N[2] * T[0] - N[0] * T[2], N[0] * T[1] - N[1] * T[0]};
-        const float r2[3] = {T[1] * B[2] - T[2] * B[1], T[2] * B[0] - T[0] * B[2], T[0] * B[1] - T[1] * B[0]};
-        const float n[3] = {snx[i], sny[i], snz[i]};
-        const float x = r0[0] * n[0] + r0[1] * n[1] + r0[2] * n[2], y = r1[0] * n[0] + r1[1] * n[1] + r1[2] * n[2],
-                    z = r2[0] * n[0] + r2[1] * n[1] + r2[2] * n[2];
-        const float det = T[0] * r0[0] + T[1] * r0[1] + T[2] * r0[2], length = x * x + y * y + z * z;
-        const int solved = int(std::fabs(det) > 1e-6f) & int(length > 0.0f);
-        const float scale = std::copysign(1.0f, det) / std::sqrt(length);
-        out[i] = uint32_t(encodeLane(x * scale)) | uint32_t(encodeLane(y * scale)) << 8 |
-                 uint32_t(encodeLane(z * scale)) << 16 | 0xFF000000u;
-        state[i] = uint8_t(kTexelPainted | (solved << 1));
-    }
-}
 
 // Target faces by the bands of rows their UV triangles may touch (conservatively), in face order.
 struct FaceBands {
@@ -483,12 +411,14 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
                     batch.push(l1, l2, n, stateRow + uint32_t(x), imageRow + uint32_t(x));
                 }
             });
-            solveBatch(targetFrame, batch);
-            uint32_t *const image = reinterpret_cast<uint32_t *>(rgba);
+            solveTexelBatch(targetFrame, batch);
             for (size_t t = 0; t < batch.size; ++t) {
-                states[batch.stateIndex[t]] = batch.state[t];
-                if (batch.state[t] & kFromSource)
-                    image[batch.imageIndex[t]] = batch.colour[t];
+                states[batch.stateIndex[t]] = uint8_t(kTexelPainted | (batch.solved[t] ? kFromSource : 0));
+                if (batch.solved[t]) {
+                    uint8_t *p = rgba + 4 * size_t(batch.imageIndex[t]);
+                    const uint32_t c = batch.colour[t];
+                    p[0] = uint8_t(c), p[1] = uint8_t(c >> 8), p[2] = uint8_t(c >> 16);
+                }
             }
         }
         size_t fromSource = 0, painted = 0;  // local: the bands' counters share cache lines
