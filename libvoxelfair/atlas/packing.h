@@ -19,7 +19,9 @@
 //     packing's masks, fills the texture as densely as that packing filled its rows; after a
 //     miss, where the first packing's height grown like the density squared reaches 97% of the
 //     texture; skipped when it would gain under 4%), so the charts fill it instead of leaving up
-//     to three quarters empty after rounding. If even the largest texture is too small the
+//     to three quarters empty after rounding; a small texture whose charts still fill under
+//     half of it (rims of few small charts) steps up while small (leastChartShare). If even
+//     the largest texture is too small the
 //     density is lowered until the charts fit (densityReduced).
 //   * texture -> density (textureSize > 0): the side is fixed (textureHeight: a non-square one)
 //     and the density is the largest that fits (4 to 10 packings): the authors' fixed
@@ -58,6 +60,14 @@ struct PackOptions {
     // packing only.
     bool fillTexture = true;
     int fillAttempts = 2;
+    // Density mode with fillTexture, small textures: each chart's rim (padding, blocks) costs
+    // texels whatever the density, and on a model of few small charts the smallest texture
+    // holding them is mostly rims (12 faces: 5% charts in 16 x 8). While the charts' projected
+    // area fills less than this share of the texture, the larger sizes up to smallTexels
+    // (512 x 256, 512 KiB) are tried, each at the density that fills it, and the one giving the
+    // charts the largest share is kept (a few packings of tiny textures). 0: never.
+    double leastChartShare = 0.5;
+    int smallTexels = 512 * 256;
     // Largest side when textureSize = 0, rounded down to a power of two, at most 16384.
     int maxTextureSize = 4096;
     // Empty texels kept between any two charts; charts also stay gutter/2 texels from the

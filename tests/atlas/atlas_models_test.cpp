@@ -89,9 +89,11 @@ TEST(AtlasModels, EverySharedModelIsCrispWithoutOverlaps) {
     ASSERT_GE(coverage.size(), 15u);
     std::printf("coverage: median %.1f%%, lowest %.1f%% over %zu models\n", 100 * pipeline::median(coverage),
                 100 * *std::min_element(coverage.begin(), coverage.end()), coverage.size());
-    // Measured 57.4% (2:1 textures, filled from the first packing's estimate, a second try after
-    // a miss); 54.2% with the fill's first aim, 31.7% before. The goal, 70%, is not reached.
-    EXPECT_GE(pipeline::median(coverage), 0.56);
+    // Measured 64.9%, lowest 51.8% (2 x 2 blocks with a gutter of 2, holes inside large charts
+    // reused, small textures stepped up); 57.4% and 4.7% before them (2:1 textures, the fill),
+    // 31.7% before that. The goal, a 70% median, is not reached.
+    EXPECT_GE(pipeline::median(coverage), 0.63);
+    EXPECT_GE(*std::min_element(coverage.begin(), coverage.end()), 0.5);
 }
 
 TEST(AtlasModels, GeneratedFamiliesAreCrispWithoutOverlaps) {

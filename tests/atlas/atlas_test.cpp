@@ -454,14 +454,25 @@ TEST(Packing, EveryFamilyEveryModeIsValid) {
                 << byDensity.width << " x " << byDensity.height;
             EXPECT_EQ(byDensity.size, byDensity.width);
 
-            // The same texture at the least density: the fill only raised it.
+            // The same texture at the least density: the fill only raised it (without the
+            // small-texture step).
+            PackOptions sameSize = density;
+            sameSize.leastChartShare = 0;
+            const AtlasLayout filled = packCharts(charts, sameSize);
             PackOptions least = density;
             least.fillTexture = false;
             const AtlasLayout atLeast = packCharts(charts, least);
             expectValidAtlas(mesh, charts, atLeast, 0.7f);
             EXPECT_EQ(atLeast.texelsPerUnit, 8.0);
-            EXPECT_EQ(atLeast.width, byDensity.width);
-            EXPECT_EQ(atLeast.height, byDensity.height);
+            EXPECT_EQ(atLeast.width, filled.width);
+            EXPECT_EQ(atLeast.height, filled.height);
+            // The step: a larger texture only while small, and only for a denser fill of it.
+            const double texels = double(byDensity.width) * byDensity.height;
+            if (texels != double(filled.width) * filled.height) {
+                EXPECT_LE(texels, double(density.smallTexels));
+                EXPECT_GT(byDensity.texelsPerUnit * byDensity.texelsPerUnit / texels,
+                          filled.texelsPerUnit * filled.texelsPerUnit / (double(filled.width) * filled.height));
+            }
 
             PackOptions fixed = density;
             fixed.textureSize = 256;
