@@ -176,22 +176,32 @@ void underSpans(const glm::vec2 *uv, int width, int height, int r0, int r1, Span
         return;
     const float lo = std::min({q[0].y, q[1].y, q[2].y}), hi = std::max({q[0].y, q[1].y, q[2].y});
     const int y0 = std::max(r0, int(std::ceil(lo - 0.5f))), y1 = std::min(r1 - 1, int(std::floor(hi - 0.5f)));
+    // Edge a -> b bounds the inside where sign(area) * cross(b - a, c - a) >= 0: for a row, x
+    // >= or <= its crossing a.x + (cy - a.y) ex / ey (left or right bound by the sign of
+    // -sign(area) ey); a horizontal edge bounds the rows instead (cy on its inner side).
+    float ax[3], ay[3], inverse[3];
+    int side[3];  // 1: left bound, -1: right bound, 0: horizontal
+    float rowSign[3];
+    const float s = area > 0.0f ? 1.0f : -1.0f;
+    for (int k = 0; k < 3; ++k) {
+        const glm::vec2 a = q[k], b = q[(k + 1) % 3];
+        const float ex = b.x - a.x, ey = b.y - a.y;
+        ax[k] = a.x, ay[k] = a.y;
+        side[k] = -s * ey > 0.0f ? 1 : (-s * ey < 0.0f ? -1 : 0);
+        inverse[k] = ey != 0.0f ? ex / ey : 0.0f;
+        rowSign[k] = s * ex;  // horizontal edge: inside where s ex (cy - a.y) >= 0
+    }
     for (int y = y0; y <= y1; ++y) {
         const float cy = float(y) + 0.5f;
         float xl = -1.0f, xr = float(width);
         bool empty = false;
         for (int k = 0; k < 3; ++k) {
-            // Edge a -> b: inside where sign(area) * cross(b - a, c - a) >= 0, linear in c.x:
-            // ex * (cy - a.y) - ey * (cx - a.x) >= 0 (times the sign).
-            const glm::vec2 a = q[k], b = q[(k + 1) % 3];
-            const float ex = b.x - a.x, ey = b.y - a.y;
-            const float s = area > 0.0f ? 1.0f : -1.0f;
-            const float slope = -s * ey, offset = s * (ex * (cy - a.y) + ey * a.x);  // slope * cx + offset >= 0
-            if (slope > 0.0f)
-                xl = std::max(xl, -offset / slope);
-            else if (slope < 0.0f)
-                xr = std::min(xr, -offset / slope);
-            else if (offset < 0.0f)
+            const float crossing = ax[k] + (cy - ay[k]) * inverse[k];
+            if (side[k] > 0)
+                xl = std::max(xl, crossing);
+            else if (side[k] < 0)
+                xr = std::min(xr, crossing);
+            else if (rowSign[k] * (cy - ay[k]) < 0.0f)
                 empty = true;
         }
         // Texels whose centre x + 0.5 lies in [xl, xr].
