@@ -30,7 +30,7 @@ struct ChartBitmaps {
 };
 
 // Builds bitmaps of the charts whose coarse mask covers at least `leastBlocks` blocks, from the
-// fine masks (texels; their scale, offset and padding) and their coarse masks (blocks), and
+// fine masks (texels, rasterised with keepSpans: their spans and padding) and their coarse masks (blocks), and
 // lowers coarse.totalRowTexels to the blocks the bitmaps' row spans hold.
 void rasterizeChartBitmaps(const AtlasCharts &charts, const ChartMasks &fine, ChartMasks &coarse, int64_t leastBlocks,
                            ChartBitmaps &out);

@@ -32,7 +32,10 @@ void windowMin(const std::vector<int> &v, int from, int count, int r, int *out) 
 
 }  // namespace
 
-bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int padding, int maxSide, ChartMasks &masks) {
+bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int padding, int maxSide, ChartMasks &masks,
+                         bool keepSpans) {
+    masks.spans.clear();
+    masks.spanFirst.assign(keepSpans ? 1 : 0, 0);
     masks.charts.assign(charts.chartCount(), ChartMask{});
     masks.profiles.clear();
     masks.texelsPerUnit = texelsPerUnit;
@@ -60,6 +63,8 @@ bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int pa
             rasterConservativeSpans(
                 glm::dvec2(uv[0]) * m.scale + double(border), glm::dvec2(uv[1]) * m.scale + double(border),
                 glm::dvec2(uv[2]) * m.scale + double(border), kMaskMargin, w, h, [&](int y, int xl, int xr) {
+                    if (keepSpans)
+                        masks.spans.insert(masks.spans.end(), {int16_t(y), int16_t(xl), int16_t(xr)});
                     rowLeft[size_t(y)] = std::min(rowLeft[size_t(y)], xl);
                     rowRight[size_t(y)] = std::max(rowRight[size_t(y)], xr);
                     int *bottom = colBottom.data(), *top = colTop.data();
@@ -88,6 +93,14 @@ bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int pa
         if (m.width > maxSide || m.height > maxSide)
             return false;
         m.offset = glm::dvec2(border - x0, border - y0);
+        if (keepSpans) {  // canvas -> mask texels
+            for (size_t k = masks.spanFirst.back(); k < masks.spans.size(); k += 3) {
+                masks.spans[k] = int16_t(masks.spans[k] - y0);
+                masks.spans[k + 1] = int16_t(masks.spans[k + 1] - x0);
+                masks.spans[k + 2] = int16_t(masks.spans[k + 2] - x0);
+            }
+            masks.spanFirst.push_back(masks.spans.size());
+        }
 
         m.profile = masks.profiles.size();
         masks.profiles.resize(m.profile + 2 * size_t(m.width) + 2 * size_t(m.height));

@@ -42,6 +42,10 @@ struct ChartMasks {
     // Texels between the leftmost and rightmost set texel of every row of every mask: no
     // packing of the masks takes less room (the tight packer takes these spans or more).
     size_t totalRowTexels = 0;
+    // With keepSpans: every chart's conservative texel spans (row, first, last), in mask texels,
+    // chart c's from spanFirst[c] to spanFirst[c + 1] (chart_bitmaps.h reads them).
+    std::vector<int16_t> spans;
+    std::vector<size_t> spanFirst;
 };
 
 // Where a packer put a chart: the mask's lower-left corner in the texture, after turning it by
@@ -53,7 +57,8 @@ struct ChartPlacement {
 
 // Rasterises every chart at `texelsPerUnit`. Returns false (and leaves `masks` partial) as soon
 // as a mask would be wider or taller than maxSide, which bounds the work for absurd densities.
-bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int padding, int maxSide, ChartMasks &masks);
+bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int padding, int maxSide, ChartMasks &masks,
+                         bool keepSpans = false);
 
 // The masks on a grid of 2 x 2 texel blocks (PackOptions::mipBlocks): a block is set when any
 // of its texels is, so masks placed without overlap at even texels share no block. Mask sizes

@@ -171,6 +171,7 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
     // Whether the last chart's projection winds over itself (chart_overlap.h).
     std::vector<ChartBoundaryEdge> boundary;
     std::vector<ChartCorner> corners;
+    std::vector<uint32_t> boundaryStamp;  // per vertex: the last chart it bounded
     auto foldsOver = [&](uint32_t c) {
         boundary.clear();
         for (size_t i = out.chartFirstFace[c]; i < out.chartFaces.size(); ++i) {
@@ -186,17 +187,26 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
         }
         if (boundaryCrossesItself(boundary))
             return true;
+        // Only the boundary's vertices: around an inner vertex the chart's faces close one fan.
+        for (const ChartBoundaryEdge &e : boundary)
+            for (uint32_t v : {e.va, e.vb}) {
+                if (v >= boundaryStamp.size())
+                    boundaryStamp.resize(size_t(v) + 1, UINT32_MAX);
+                boundaryStamp[v] = c;
+            }
         corners.clear();
         for (size_t i = out.chartFirstFace[c]; i < out.chartFaces.size(); ++i) {
             const glm::vec2 *w = &out.wedgeUv[3 * i];
             if (doubleArea(w[0], w[1], w[2]) <= 0)
                 continue;  // no sector (degenerate in UV)
             for (int k = 0; k < 3; ++k) {
+                const uint32_t v = mesh.triangles[3 * size_t(out.chartFaces[i]) + k];
+                if (v >= boundaryStamp.size() || boundaryStamp[v] != c)
+                    continue;
                 const glm::dvec2 a = glm::dvec2(w[(k + 1) % 3] - w[k]), b = glm::dvec2(w[(k + 2) % 3] - w[k]);
                 double from = std::atan2(a.y, a.x);
                 from += from < 0 ? 6.283185307179586 : 0;
-                corners.push_back({mesh.triangles[3 * size_t(out.chartFaces[i]) + k], from,
-                                   std::atan2(a.x * b.y - a.y * b.x, a.x * b.x + a.y * b.y)});
+                corners.push_back({v, from, std::atan2(a.x * b.y - a.y * b.x, a.x * b.x + a.y * b.y)});
             }
         }
         return cornersOverlap(corners);

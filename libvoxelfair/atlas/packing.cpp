@@ -31,7 +31,7 @@ struct Packing {
 };
 
 bool rasterize(const AtlasCharts &charts, double density, int padding, int maxSide, Packing &out) {
-    if (!rasterizeChartMasks(charts, density, padding, maxSide, out.masks))
+    if (!rasterizeChartMasks(charts, density, padding, maxSide, out.masks, out.block > 1))
         return false;
     if (out.block > 1) {
         coarsenChartMasks(out.masks, out.blocks);
