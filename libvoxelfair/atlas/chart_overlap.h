@@ -28,7 +28,8 @@ bool boundaryCrossesItself(const std::vector<ChartBoundaryEdge> &edges);
 // (the chart goes round the vertex past a gap of faces it left out, and its two sides overlap
 // near the vertex without any two edges crossing). A corner: a face's vertex and the angles
 // of its two edges there in UV, the face's sector going counter-clockwise from `from` by
-// `width` (0..pi). True when two sectors at one vertex overlap by more than 1e-3 radians.
+// `width` (0..pi), in radians or any measure monotonic in them with a full turn of 2 pi (charts.cpp
+// uses a trigonometry-free one). True when two sectors at one vertex overlap by more than 1e-3.
 struct ChartCorner {
     uint32_t vertex;
     double from, width;

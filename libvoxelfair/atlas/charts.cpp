@@ -16,6 +16,15 @@
 namespace voxelfair {
 namespace {
 
+// An angle without trigonometry: the direction's position around the unit diamond |x| + |y| = 1,
+// scaled to a full turn of 2 pi; monotonic in the true angle, all the fold check needs.
+constexpr double kDiamondTurn = 6.283185307179586;
+double diamondAngle(glm::dvec2 d) {
+    const double t = d.y / (std::abs(d.x) + std::abs(d.y));  // -1..1
+    const double quarter = kDiamondTurn / 4;
+    return d.x >= 0 ? (d.y >= 0 ? t : 4 + t) * quarter : (2 - t) * quarter;
+}
+
 bool finite(const glm::vec3 &v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // Stable LSD radix sort of `items` by `keys` (ascending), 8 bits per pass, skipping passes where
@@ -203,10 +212,10 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
                 const uint32_t v = mesh.triangles[3 * size_t(out.chartFaces[i]) + k];
                 if (v >= boundaryStamp.size() || boundaryStamp[v] != c)
                     continue;
-                const glm::dvec2 a = glm::dvec2(w[(k + 1) % 3] - w[k]), b = glm::dvec2(w[(k + 2) % 3] - w[k]);
-                double from = std::atan2(a.y, a.x);
-                from += from < 0 ? 6.283185307179586 : 0;
-                corners.push_back({v, from, std::atan2(a.x * b.y - a.y * b.x, a.x * b.x + a.y * b.y)});
+                const double from = diamondAngle(glm::dvec2(w[(k + 1) % 3] - w[k]));
+                double to = diamondAngle(glm::dvec2(w[(k + 2) % 3] - w[k]));
+                to += to < from ? kDiamondTurn : 0;
+                corners.push_back({v, from, to - from});
             }
         }
         return cornersOverlap(corners);
