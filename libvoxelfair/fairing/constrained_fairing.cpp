@@ -50,6 +50,7 @@ void run(constrained::FairingState<kQuads> &s) {
         holdAnchors(s);
         for (int i = 0; i < s.options.positionSweeps; ++i)
             sweep(s, i % 2 == 0);
+        fitFeatureVertices(s);
         ++s.report.passes;
     }
     if (s.options.passes > 0 && s.options.driftRounds > 0)
@@ -66,11 +67,14 @@ ConstrainedFairingReport fairConstrained(const MutablePolygonMesh &mesh, const u
     ConstrainedFairingReport report;
     if (options.passes < 0 || options.normalLevels < 0 || options.normalLevels > 8 || options.positionSweeps < 0 ||
         options.stepReach < 1 || options.featureReach < 0 || options.driftRounds < 0 ||
+        options.featureFitIterations < 0 ||
+        !(options.featureSpreadDegrees >= 0.0f && options.featureSpreadDegrees < 180.0f) ||
         !(options.cellHalfWidth > 0.0f) || !std::isfinite(options.cellHalfWidth) ||
         !(options.creaseAngleDegrees > 0.0f && options.creaseAngleDegrees < 180.0f) ||
         !std::isfinite(options.voxelSize) || options.voxelSize < 0.0f)
         throw OptionError("constrained fairing: passes, positionSweeps, driftRounds >= 0, normalLevels in [0, 8], "
-                          "stepReach >= 1, featureReach >= 0, cellHalfWidth > 0, creaseAngle in (0, 180), voxelSize "
+                          "featureFitIterations >= 0, featureSpread in [0, 180), stepReach >= 1, featureReach >= 0, "
+                          "cellHalfWidth > 0, creaseAngle in (0, 180), voxelSize "
                           "finite and >= 0");
     if (const FairingStatus status = checkFairingInput(mesh, options.passes, &report.message);
         status != FairingStatus::Ok)

@@ -22,6 +22,9 @@
 //    vertex on a genuine edge line moves towards the planes of its polygons (which keeps the
 //    edge sharp); vertices where genuine edges end or meet do not move. positionSweeps
 //    Gauss-Seidel sweeps, alternating direction.
+// 3b. Where the filtered normals of a vertex's polygons turn by more than featureSpread (edges
+//    and rims hidden in the staircase), the vertex is moved towards those polygons' planes (Sun et
+//    al.'s own vertex update), which puts it on their line or corner (constrained/feature_fit.cpp).
 // 4. Every vertex stays inside the cell around its input position (half-width cellHalfWidth
 //    voxels per axis): on the voxel surface the true surface crosses the cube spanned by the 8
 //    voxel centres around each lattice vertex (Gibson, "Constrained elastic surface nets",
@@ -69,6 +72,11 @@ struct ConstrainedFairingOptions {
     int normalLevels = 3;
     // Position fitting sweeps per pass (step 3).
     int positionSweeps = 6;
+    // Step 3b (constrained/feature_fit.cpp): sweeps per pass that move the vertices whose
+    // polygons' filtered normals turn by more than featureSpreadDegrees towards those polygons'
+    // planes (0 turns it off).
+    int featureFitIterations = 10;
+    float featureSpreadDegrees = 10.0f;
     // Find flat faces at any orientation and hold their vertices on fitted planes, edges and
     // corners (constrained/plane_regions.cpp). Off: slow on large curved surfaces (see above).
     bool fitPlanes = false;
@@ -100,6 +108,7 @@ struct ConstrainedFairingReport {
     size_t pinnedVertices = 0;     // vertices where sharp edges end or meet, or not selected: never moved
     size_t planeRegions = 0;       // flat faces found (fitPlanes)
     size_t planeVertices = 0;      // vertices held on their planes, edge lines or corners
+    size_t featureVertices = 0;    // vertices fitted to their polygons' planes (step 3b, last pass)
     size_t skippedVertices = 0;    // vertices with non-finite coordinates: never moved, never neighbours
     size_t movedVertices = 0;      // vertices that ended more than 1e-6 voxel from their input
     size_t clampedVertices = 0;    // vertices that ended on the wall of their cell

@@ -5,8 +5,8 @@
 // table is printed, and its goal class is asserted on every instance:
 //
 //   class          issue 15's goal (RMS, voxels)   asserted here          met?
-//   Curved         0.07                            0.075                  not quite: worst 0.072 (a capsule)
-//   Cylinder       0.08                            0.16                   no: worst 0.15
+//   Curved         0.07                            0.075                  yes: worst 0.070 (a torus)
+//   Cylinder       0.08                            0.155                  no: worst 0.142 (on an axis)
 //   LatticeBox     0.03                            0.03                   yes (exact: 0)
 //   FlatAndEdges   0.10                            per family, below      rounded boxes and hulls only
 //
@@ -42,29 +42,28 @@ constexpr int kInstances = 4;
 double rmsBound(const shapes::Family &family) {
     switch (family.goal) {
     case shapes::FamilyGoal::Curved: return 0.075;
-    case shapes::FamilyGoal::Cylinder: return 0.16;
+    case shapes::FamilyGoal::Cylinder: return 0.155;
     case shapes::FamilyGoal::LatticeBox: return 0.03;
     case shapes::FamilyGoal::FlatAndEdges: break;
     }
     // Measured worst of the first kInstances, plus about 10%; the goal is 0.10.
     static const std::map<std::string, double> measured = {
         {"rounded box", 0.10},  // goal met
-        {"barrel on hull", 0.125},
+        {"barrel on hull", 0.115},
         {"rounded box on the lattice", 0.15},
-        {"box turned about one axis", 0.16},
-        {"box turned about two axes", 0.19},
+        {"box turned about one axis", 0.15},
+        {"box turned about two axes", 0.18},
         {"plate", 0.16},
-        {"wedge", 0.16},
-        {"chamfered plate", 0.16},
+        {"wedge", 0.155},
+        {"chamfered plate", 0.155},
     };
     const auto it = measured.find(family.name);
     return it != measured.end() ? it->second : 0.10;
 }
 
 // Families whose mean RMS is not below the paper's pass / VTK's (issue 15's goal not met there).
-const std::vector<std::string> kBehindPaper = {"rounded box on the lattice", "chamfered plate"};
-const std::vector<std::string> kBehindVtk = {"cone", "box turned about two axes", "rounded box on the lattice", "wedge",
-                                             "chamfered plate"};
+const std::vector<std::string> kBehindPaper = {"rounded box on the lattice"};
+const std::vector<std::string> kBehindVtk = {"rounded box on the lattice", "chamfered plate"};
 bool listed(const std::vector<std::string> &list, const std::string &name) {
     return std::find(list.begin(), list.end(), name) != list.end();
 }

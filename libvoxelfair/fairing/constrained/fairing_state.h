@@ -14,6 +14,8 @@
 //   position_fit.cpp     fitFreeVertices, sweep, finish  steps 3 and 4: positions fitted to the
 //                        lendAnchorNormals, holdAnchors  normals inside each vertex's cell
 //   position_kernel.h    moveFreeBlock                   step 3's update, four vertices in SSE
+//   feature_fit.cpp      fitFeatureVertices              step 3b: vertices where the normals turn
+//                                                        moved towards their polygons' planes
 //
 // Every stage takes the state and documents which arrays it reads and which it fills. Member
 // pointers used in hot loops are copied to locals in the stages: stores through the byte arrays
@@ -84,9 +86,10 @@ struct FairingState {
         return std::max(setup, passesBytes(V + V / 8 + 4));
     }
     size_t passesBytes(size_t freeSlots) const {
-        return Arena::bytes<glm::vec3>(P + 2) + Arena::bytes<VertexNormal>(V) + Arena::bytes<uint32_t>(freeSlots) +
-               Arena::bytes<uint32_t>(kRegularValence * freeSlots) + Arena::bytes<Offset>(freeSlots + V + 1) +
-               Arena::bytes<FitBlock>(freeSlots / 4) + Arena::bytes<uint8_t>(freeSlots / 4);
+        return Arena::bytes<glm::vec3>(P + 2) + Arena::bytes<VertexNormal>(V) + Arena::bytes<uint8_t>(V) +
+               Arena::bytes<uint32_t>(freeSlots) + Arena::bytes<uint32_t>(kRegularValence * freeSlots) +
+               Arena::bytes<Offset>(freeSlots + V + 1) + Arena::bytes<FitBlock>(freeSlots / 4) +
+               Arena::bytes<uint8_t>(freeSlots / 4);
     }
     // The arrays of the setup stages, taken before the first one runs.
     void takeArrays() {
@@ -159,6 +162,8 @@ struct FairingState {
     Offset *offset = nullptr;
     FitBlock *fit = nullptr;          // per block of four free slots
     uint8_t *regularBlock = nullptr;  // per block: all its vertices Free (moveFreeBlock)
+    uint8_t *turning = nullptr;       // by vertex: a neighbour's normal beyond featureSpread (fitFreeVertices)
+    bool anyTurning = false;
 
     // plane_regions.cpp: free vertices held at a fixed offset, lending a normal to their neighbours.
     std::vector<uint32_t> anchored;
@@ -197,6 +202,8 @@ template <bool kQuads>
 void fitFreeVertices(FairingState<kQuads> &s);
 template <bool kQuads>
 void sweep(FairingState<kQuads> &s, bool forward);
+template <bool kQuads>
+void fitFeatureVertices(FairingState<kQuads> &s);
 template <bool kQuads>
 void finish(FairingState<kQuads> &s);
 

@@ -31,6 +31,7 @@
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 namespace voxelfair::constrained {
 inline namespace VOXELFAIR_SIMD_VARIANT {
@@ -45,10 +46,15 @@ VOXELFAIR_NOINLINE void fitFreeVertices(FairingState<kQuads> &s) {
     const uint32_t *const rank = s.rank, *const start = s.vertexStart, *const next = s.vertexNext;
     FitBlock *const fit = s.fit;
     uint8_t *const regularBlock = s.regularBlock;
+    // Step 3b's feature vertices (feature_fit.cpp): a neighbour's normal more than featureSpread
+    // away, |n + n_u|^2 = 2 + 2 cos(angle) below its bound.
+    uint8_t *const turning = s.turning;
+    const float turned = 2.0f + 2.0f * std::cos(glm::radians(s.options.featureSpreadDegrees));
+    bool anyTurning = false;
     for (size_t v = 0; v < s.V; ++v) {
         if (!isFree(kind[v]))
             continue;
-        float sum2 = 0.0f, base = 0.0f;
+        float sum2 = 0.0f, base = 0.0f, minE2 = 4.0f;
         bool allUsed = true;
 #ifdef VOXELFAIR_SSE2
         // (Vertex normals are 16-byte blocks with a zero fourth float: whole loads.)
@@ -59,6 +65,7 @@ VOXELFAIR_NOINLINE void fitFreeVertices(FairingState<kQuads> &s) {
             const uint32_t u = next[i];
             const __m128 e = _mm_add_ps(n, isFree(kind[u]) ? normalOf(u) : n);
             const float e2 = dot3(e, e);
+            minE2 = std::min(minE2, e2);
             if (!(e2 > 2.0f)) {
                 allUsed = false;
                 continue;
@@ -78,6 +85,7 @@ VOXELFAIR_NOINLINE void fitFreeVertices(FairingState<kQuads> &s) {
             const uint32_t u = next[i];
             const glm::vec3 e = s.edgeTerm(n, u);
             const float e2 = glm::dot(e, e);
+            minE2 = std::min(minE2, e2);
             if (!(e2 > 2.0f)) {
                 allUsed = false;
                 continue;
@@ -89,6 +97,8 @@ VOXELFAIR_NOINLINE void fitFreeVertices(FairingState<kQuads> &s) {
         const float nOut[3] = {n.x, n.y, n.z}, sOut[3] = {sumS.x, sumS.y, sumS.z};
 #endif
         const uint32_t slot = rank[v];
+        turning[v] = minE2 < turned;
+        anyTurning = anyTurning || minE2 < turned;
         if (!allUsed)
             kind[v] = VertexKind::FreeIrregular;
         if (kind[v] != VertexKind::Free)
@@ -104,6 +114,7 @@ VOXELFAIR_NOINLINE void fitFreeVertices(FairingState<kQuads> &s) {
         f.sy[lane] = sOut[1];
         f.sz[lane] = sOut[2];
     }
+    s.anyTurning = anyTurning;
     // n . d with this pass's normals, slot by slot.
     for (size_t slot = 0; slot < s.freeSlots; ++slot)
         s.offset[slot].alongNormal = glm::dot(fit[slot / 4].n(int(slot % 4)), s.offset[slot].d);

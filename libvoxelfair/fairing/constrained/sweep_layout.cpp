@@ -77,6 +77,8 @@ VOXELFAIR_NOINLINE void buildSlots(FairingState<kQuads> &s) {
     s.filtered = s.scratch.template take<glm::vec3>(s.P + 2);
     s.filtered[s.P] = s.filtered[s.P + 1] = glm::vec3(0.0f);
     s.vertexNormal = s.scratch.template take<VertexNormal>(V);
+    s.turning = s.scratch.template take<uint8_t>(V);
+    std::fill(s.turning, s.turning + V, uint8_t(0));
     s.slotNeighbours = s.scratch.template take<uint32_t>(kRegularValence * freeSlots);
     s.offset = s.scratch.template take<Offset>(zeroSlot + 1);
     std::fill(s.offset, s.offset + zeroSlot + 1, Offset{0.0f, glm::vec3(0.0f)});
