@@ -18,7 +18,8 @@
 // 1-voxel plates and rods from collapsing, and keeps the volume.
 //
 // Contract: fitFreeVertices (reads vertexNormal, input, kind; fills fit, regularBlock, offset's
-// alongNormal) prepares one pass; sweep(forward) runs one Gauss-Seidel sweep, edge-line vertices
+// alongNormal, and turning / anyTurning: a neighbour's normal more than featureSpread away, for
+// feature_fit.cpp) prepares one pass; sweep(forward) runs one Gauss-Seidel sweep, edge-line vertices
 // then free ones, in slot order or its reverse, each clamped into its cell as it moves; finish
 // writes input + offset to the free and edge-line vertices and the report's counts. removeDrift
 // (step 5 of constrained_fairing.h) averages each vertex's n . d with its neighbours' `rounds`
