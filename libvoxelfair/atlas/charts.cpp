@@ -51,6 +51,17 @@ void radixSortByKey(std::vector<uint32_t> &items, std::vector<uint32_t> &keys) {
 
 }  // namespace
 
+double AtlasCharts::projectedArea() const {
+    double area = 0;
+    for (size_t c = 0; c < chartCount(); ++c)
+        if (!isDegenerate(c))
+            for (uint32_t i = chartFirstFace[c]; i < chartFirstFace[c + 1]; ++i) {
+                const glm::vec2 *uv = &wedgeUv[3 * size_t(i)];
+                area += 0.5 * std::abs(doubleArea(uv[0], uv[1], uv[2]));
+            }
+    return area;
+}
+
 AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
     AtlasCharts out;
     validateAtlasMesh(mesh);

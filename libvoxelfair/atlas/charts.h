@@ -76,6 +76,8 @@ struct AtlasCharts {
     bool isDegenerate(size_t chart) const {
         return chartAxis[chart].x == 0 && chartAxis[chart].y == 0 && chartAxis[chart].z == 0;
     }
+    // The charts' projected area (model units squared), degenerate charts left out.
+    double projectedArea() const;
 };
 
 // Throws MeshError for an invalid mesh (validateAtlasMesh); no charts for a mesh without faces.

@@ -148,18 +148,6 @@ double fillScale(const Packing &packing, int side, int height, double efficiency
     return lo;
 }
 
-// The charts' projected area (chart units squared), degenerate charts left out.
-double projectedArea(const AtlasCharts &charts) {
-    double area = 0;
-    for (size_t c = 0; c < charts.chartCount(); ++c)
-        if (!charts.isDegenerate(c))
-            for (uint32_t i = charts.chartFirstFace[c]; i < charts.chartFirstFace[c + 1]; ++i) {
-                const glm::vec2 *uv = &charts.wedgeUv[3 * size_t(i)];
-                area += 0.5 * std::abs(doubleArea(uv[0], uv[1], uv[2]));
-            }
-    return area;
-}
-
 bool densestFit(const AtlasCharts &charts, const PackOptions &o, int padding, int side, int height, double ceiling,
                 Packing &best, double &density, size_t &attempts, double known = 0, double knownFilled = 0,
                 double knownReached = 0) {
@@ -320,7 +308,7 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
             // Small textures whose charts' rims leave the charts too little of them: the larger
             // sizes up to smallTexels, each at the density that fills it, the best share kept
             // (a long chart can cap the density of one shape and not of the next).
-            const double area = projectedArea(charts);
+            const double area = charts.projectedArea();
             auto share = [&](double d, int w, int h) { return area * d * d / (double(w) * h); };
             double best = share(out.texelsPerUnit, out.size, height);
             for (int width = out.size, taller = height; best < options.leastChartShare;) {

@@ -1,24 +1,12 @@
 #include "atlas/texture_atlas.h"
 
-#include "atlas/texel_raster.h"
 #include "base/error.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace voxelfair {
 namespace {
-
-// The charts' projected area (model units squared, degenerate charts left out).
-double chartArea(const AtlasCharts &charts) {
-    double area = 0;
-    for (size_t c = 0; c < charts.chartCount(); ++c)
-        if (!charts.isDegenerate(c))
-            for (uint32_t i = charts.chartFirstFace[c]; i < charts.chartFirstFace[c + 1]; ++i) {
-                const glm::vec2 *uv = &charts.wedgeUv[3 * size_t(i)];
-                area += 0.5 * std::abs(doubleArea(uv[0], uv[1], uv[2]));
-            }
-    return area;
-}
 
 // Packs the charts again after a separation; false, the layout left as it was, when they no
 // longer fit any allowed texture (packCharts throws OptionError then).
@@ -50,7 +38,7 @@ TextureAtlas buildTextureAtlas(const AtlasMesh &mesh, const AtlasOptions &option
         // points apart by that factor: raise the density while the charts (twice their area for
         // gutters and packing) stay within the largest texture, then separate what is left.
         double density = pack.texelsPerUnit;
-        const double area = chartArea(atlas.charts);
+        const double area = atlas.charts.projectedArea();
         const double largest = double(std::clamp(pack.maxTextureSize, 1, 16384));
         separate(density, options.maxSeparatedShare);
         while (options.alwaysCrisp && atlas.crowded.overBudget() &&
