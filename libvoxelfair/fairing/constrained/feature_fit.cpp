@@ -41,44 +41,49 @@ VOXELFAIR_NOINLINE void fitFeatureVertices(FairingState<kQuads> &s) {
     const uint32_t *const indices = s.indices, *const rank = s.rank;
     const uint8_t *const live = s.live;
     const glm::vec3 *const normal = s.normal;
+    // The lists live in the scratch block after step 3's arrays (FairingState::passesBytes has
+    // room for them) and die at the end of the pass.
     const Arena::Mark mark = s.scratch.mark();
     uint32_t *const first = s.scratch.template take<uint32_t>(V);  // each vertex's feature index
-    std::vector<uint8_t> held(s.anchored.empty() ? 0 : V, 0);
-    for (uint32_t v : s.anchored)
-        held[v] = 1;
-    std::vector<uint32_t> features, start(1, 0), polygons;
-    for (size_t v = 0; v < V; ++v) {
-        const bool feature = isFree(s.kind[v]) && s.turning[v] && (held.empty() || !held[v]);
-        first[v] = feature ? uint32_t(features.size()) : kNone;
-        if (feature)
-            features.push_back(uint32_t(v));
-    }
-    s.report.featureVertices = features.size();
-    if (features.empty()) {
+    for (size_t v = 0; v < V; ++v)
+        first[v] = isFree(s.kind[v]) && s.turning[v] ? 0u : kNone;
+    for (uint32_t v : s.anchored)  // held on their planes (plane_regions.cpp)
+        first[v] = kNone;
+    uint32_t *const features = s.scratch.template take<uint32_t>(V);
+    uint32_t count = 0;
+    for (size_t v = 0; v < V; ++v)
+        if (first[v] != kNone) {
+            first[v] = count;
+            features[count++] = uint32_t(v);
+        }
+    s.report.featureVertices = count;
+    if (count == 0) {
         s.scratch.rewind(mark);
         return;
     }
-    start.assign(features.size() + 1, 0);
+    // Each feature vertex's live polygons, counting-sorted: polygons[start[f] .. start[f + 1]).
+    uint32_t *const start = s.scratch.template take<uint32_t>(size_t(count) + 1);
+    std::fill(start, start + count + 1, 0u);
     for (size_t p = 0; p < P; ++p)
         if (live[p])
             for (uint32_t c = k.first(p); c < k.last(p); ++c)
                 if (first[indices[c]] != kNone)
                     ++start[first[indices[c]] + 1];
-    for (size_t f = 0; f < features.size(); ++f)
+    for (uint32_t f = 0; f < count; ++f)
         start[f + 1] += start[f];
-    polygons.resize(start.back());
-    std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+    uint32_t *const polygons = s.scratch.template take<uint32_t>(start[count]);
+    uint32_t *const fill = s.scratch.template take<uint32_t>(count);
+    std::copy(start, start + count, fill);
     for (size_t p = 0; p < P; ++p)
         if (live[p])
             for (uint32_t c = k.first(p); c < k.last(p); ++c)
                 if (first[indices[c]] != kNone)
                     polygons[fill[first[indices[c]]]++] = uint32_t(p);
-    s.scratch.rewind(mark);
 
     const auto at = s.currentAt();
     const float half = s.half;
     for (int iteration = 0; iteration < iterations; ++iteration)
-        for (size_t f = 0; f < features.size(); ++f) {
+        for (uint32_t f = 0; f < count; ++f) {
             const uint32_t v = features[f];
             Offset &o = s.offset[rank[v]];
             const glm::vec3 x = s.input[v] + o.d;
@@ -93,6 +98,7 @@ VOXELFAIR_NOINLINE void fitFeatureVertices(FairingState<kQuads> &s) {
             }
             o.d = glm::clamp(o.d + move / float(start[f + 1] - start[f]), -half, half);
         }
+    s.scratch.rewind(mark);
 }
 
 template void fitFeatureVertices(FairingState<true> &);
