@@ -89,12 +89,14 @@ struct FairingState {
         return Arena::bytes<glm::vec3>(P + 2) + Arena::bytes<VertexNormal>(V) + Arena::bytes<uint8_t>(V) +
                Arena::bytes<uint32_t>(freeSlots) + Arena::bytes<uint32_t>(kRegularValence * freeSlots) +
                Arena::bytes<Offset>(freeSlots + V + 1) + Arena::bytes<FitBlock>(freeSlots / 4) +
-               Arena::bytes<uint8_t>(freeSlots / 4) + featureFitBytes();
+               Arena::bytes<uint8_t>(freeSlots / 4) + std::max(featureFitBytes(), driftBytes(freeSlots + V + 1));
     }
     // fitFeatureVertices' lists, taken after step 3's arrays and given back each pass.
     size_t featureFitBytes() const {
         return 3 * Arena::bytes<uint32_t>(V) + Arena::bytes<uint32_t>(V + 1) + Arena::bytes<uint32_t>(cornerCount);
     }
+    // removeDrift's arrays, taken after step 3's arrays once the passes are done.
+    size_t driftBytes(size_t slots) const { return 3 * Arena::bytes<float>(slots) + Arena::bytes<uint32_t>(V); }
     // The arrays of the setup stages, taken before the first one runs.
     void takeArrays() {
         kind = arrays.take<VertexKind>(V);

@@ -219,14 +219,16 @@ VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds) {
     std::fill(along, along + slots, 0.0f);
     std::fill(smooth, smooth + slots, 0.0f);
     std::fill(weight, weight + slots, 0.0f);
-    std::vector<uint32_t> others;  // vertices that are not free, or free outside regular blocks
+    // The vertices that are not free, or free outside regular blocks.
+    uint32_t *const others = s.scratch.template take<uint32_t>(V);
+    size_t otherCount = 0;
     for (size_t v = 0; v < V; ++v) {
         const uint32_t slot = rank[v];
         if (isFree(kind[v]))
             along[slot] = glm::dot(normal[v].n, offset[slot].d);
         weight[slot] = 1.0f / float(1 + start[v + 1] - start[v]);
         if (!isFree(kind[v]) || !regular[slot / 4])
-            others.push_back(uint32_t(v));
+            others[otherCount++] = uint32_t(v);
     }
     // The same sums in the same order as over each vertex's corner list: a regular block's lists
     // (sweep_layout.cpp) are that list padded with the zero slot, whose 0 adds nothing.
@@ -242,7 +244,8 @@ VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds) {
                 smooth[slot] = sum * weight[slot];
             }
         }
-        for (uint32_t v : others) {
+        for (size_t i = 0; i < otherCount; ++i) {
+            const uint32_t v = others[i];
             float sum = along[rank[v]];
             for (uint32_t j = start[v]; j < start[v + 1]; ++j)
                 sum += along[rank[next[j]]];
