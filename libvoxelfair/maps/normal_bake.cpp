@@ -132,13 +132,13 @@ struct FaceBands {
     std::vector<uint32_t> start, faces;
 };
 
-FaceBands faceBands(const NormalBakeMesh &target, int width, int height) {
+FaceBands faceBands(const NormalBakeMesh &mesh, int width, int height) {
     const size_t bands = size_t((height + kBandRows - 1) / kBandRows);
     FaceBands out;
     out.start.assign(bands + 1, 0);
     auto range = [&](size_t f, size_t &b0, size_t &b1) {
         glm::dvec2 q[3];
-        loadUv(target, f, width, height, q);
+        loadUv(mesh, f, width, height, q);
         const double lo = std::min({q[0].y, q[1].y, q[2].y}), hi = std::max({q[0].y, q[1].y, q[2].y});
         if (!std::isfinite(lo) || !std::isfinite(hi) || hi < -1 || lo > height + 1)
             return false;
@@ -147,7 +147,7 @@ FaceBands faceBands(const NormalBakeMesh &target, int width, int height) {
         return true;
     };
     size_t b0 = 0, b1 = 0;
-    for (size_t f = 0; f < target.faceCount; ++f)
+    for (size_t f = 0; f < mesh.faceCount; ++f)
         if (range(f, b0, b1))
             for (size_t b = b0; b <= b1; ++b)
                 ++out.start[b + 1];
@@ -155,10 +155,25 @@ FaceBands faceBands(const NormalBakeMesh &target, int width, int height) {
         out.start[b + 1] += out.start[b];
     out.faces.resize(out.start.back());
     std::vector<uint32_t> fill(out.start.begin(), out.start.end() - 1);
-    for (size_t f = 0; f < target.faceCount; ++f)
+    for (size_t f = 0; f < mesh.faceCount; ++f)
         if (range(f, b0, b1))
             for (size_t b = b0; b <= b1; ++b)
                 out.faces[fill[b]++] = uint32_t(f);
+    // Each band's faces from left to right (by their UV boxes' left texel, then index): a band
+    // sweeps its rows once, its texels and the source faces under them stay in cache.
+    std::vector<uint64_t> keyed;
+    for (size_t b = 0; b < bands; ++b) {
+        keyed.clear();
+        for (uint32_t i = out.start[b]; i < out.start[b + 1]; ++i) {
+            const glm::vec2 *uv = &mesh.wedgeUv[3 * size_t(out.faces[i])];
+            const float left = std::min({uv[0].x, uv[1].x, uv[2].x}) * float(width);
+            const uint64_t x = std::isfinite(left) ? uint64_t(std::clamp(left, 0.0f, float(width))) : 0;
+            keyed.push_back(x << 32 | out.faces[i]);
+        }
+        std::sort(keyed.begin(), keyed.end());
+        for (uint32_t i = out.start[b]; i < out.start[b + 1]; ++i)
+            out.faces[i] = uint32_t(keyed[i - out.start[b]]);
+    }
     return out;
 }
 
@@ -304,7 +319,13 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
     }
     const size_t bandCount = bands.start.size() - 1;
     std::vector<size_t> baked(bandCount, 0), flat(bandCount, 0);
-    runBands(bandCount, options.threads, [&](size_t band) {
+    // Per thread: the band's source faces under the texel centres, the triangle's texels.
+    struct Scratch {
+        std::vector<uint32_t> under;
+        TexelBatch batch;
+    };
+    std::vector<Scratch> scratch(size_t(bandThreads(options.threads, bandCount)));
+    runWorkerBands(bandCount, options.threads, [&](size_t band, int worker) {
         const int r0 = int(band) * kBandRows, r1 = std::min(height, r0 + kBandRows);
         uint8_t *const rgba = out.rgba.data();
         uint8_t *const states = state.data();
@@ -314,20 +335,28 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
                   0xFFFF8080u);  // bytes 128, 128, 255, 255
         glm::dvec2 q[3];
         // The source face under each texel centre of the band (its UV triangle holds the centre).
-        std::vector<uint32_t> under(size_t(r1 - r0) * size_t(width), UINT32_MAX);
+        std::vector<uint32_t> &under = scratch[size_t(worker)].under;
+        under.assign(size_t(r1 - r0) * size_t(width), UINT32_MAX);
         for (uint32_t i = sourceBands.start[band]; i < sourceBands.start[band + 1]; ++i)
             underSpans(sorted->mesh.wedgeUv + 3 * size_t(sourceBands.faces[i]), width, height, r0, r1,
                        [&](int y, int xl, int xr) {
                            std::fill_n(&under[size_t(y - r0) * size_t(width) + size_t(xl)], xr - xl + 1,
                                        sourceBands.faces[i]);
                        });
-        TexelBatch batch;
+        TexelBatch &batch = scratch[size_t(worker)].batch;
         for (uint32_t i = bands.start[band]; i < bands.start[band + 1]; ++i) {
             const size_t f = bands.faces[i];
             loadUv(target, f, width, height, q);
             const double d = doubleArea(q[0], q[1], q[2]);
             if (!(d != 0) || !std::isfinite(d))
                 continue;
+            // Room for the texels of the triangle's box within the band (one ring wider: overlaps).
+            {
+                const glm::dvec2 lo = glm::min(q[0], glm::min(q[1], q[2])), hi = glm::max(q[0], glm::max(q[1], q[2]));
+                const double rows = std::min(hi.y, double(r1)) - std::max(lo.y, double(r0)) + 3,
+                             columns = std::min(hi.x, double(width)) - std::max(lo.x, 0.0) + 3;
+                batch.reserve(size_t(std::max(rows, 0.0)) * size_t(std::max(columns, 0.0)));
+            }
             // Barycentric weights as affine functions of the texel centre: l = l0 + lx x + ly y.
             const double a1 = (q[2].y - q[0].y) / d, b1 = -(q[2].x - q[0].x) / d;
             const double a2 = -(q[1].y - q[0].y) / d, b2 = (q[1].x - q[0].x) / d;
@@ -340,44 +369,43 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
                 tt[k] = glm::vec3(out.cornerTangents[3 * f + size_t(k)]);
                 w += out.cornerTangents[3 * f + size_t(k)].w;
             }
+            const glm::vec3 e1 = tp[1] - tp[0], e2 = tp[2] - tp[0];
             const float sign = w < 0.0f ? -1.0f : 1.0f;
             TargetFrame targetFrame;
             for (int k = 0; k < 3; ++k)
                 for (int a = 0; a < 3; ++a)
                     targetFrame.n[k][a] = tn[k][a], targetFrame.t[k][a] = tt[k][a];
             targetFrame.sign = sign;
-            // Each texel's walk starts from the source face under its UV (the atlas'
-            // correspondence), where the projection most often is; failing that, the previous
-            // texel's answer is taken if its walk started from the same face and it holds the
-            // projection (the walk's answer from there, found without walking). A texel with no
-            // source face under it starts from the previous answer, the first from the UV grid.
-            uint32_t hitFace = UINT32_MAX, hitStart = UINT32_MAX;
-            // The source normal at texel (x, y) with weights l; false when no source face is near.
-            auto sourceNormal = [&](int x, int y, float l0, float l1, float l2, glm::vec3 &n) {
-                const uint32_t start = under[size_t(y - r0) * size_t(width) + size_t(x)];
-                const glm::vec3 p = l0 * tp[0] + l1 * tp[1] + l2 * tp[2];
-                glm::vec3 w;
-                if (start != UINT32_MAX) {
-                    const bool again = start == hitStart;
-                    hitStart = start;
-                    if (walk->holds(p, start, w)) {
-                        hitFace = start;
-                    } else if (!again || !walk->holds(p, hitFace, w)) {
-                        const SurfaceWalk::Hit hit = walk->project(p, start, l0 * tn[0] + l1 * tn[1] + l2 * tn[2], 64);
-                        hitFace = hit.face, w = hit.weights;
-                    }
-                } else {
-                    hitStart = UINT32_MAX;
-                    if (hitFace == UINT32_MAX &&
-                        (hitFace = grid->find(double(l0) * q[0] + double(l1) * q[1] + double(l2) * q[2])) == UINT32_MAX)
-                        return false;
-                    if (!walk->holds(p, hitFace, w)) {
-                        const SurfaceWalk::Hit hit =
-                            walk->project(p, hitFace, l0 * tn[0] + l1 * tn[1] + l2 * tn[2], 64);
-                        hitFace = hit.face, w = hit.weights;
-                    }
+            // The texels are visited row by row, left to right. A texel's source point is most
+            // often on the face of the texel before it (checked first), else on the source face
+            // under its UV (the atlas' correspondence); failing both, the walk starts from the
+            // texel before it (a step or two away on the same sheet), or, for a row's first texel,
+            // from the previous row's first answer, for the triangle's first texel from the face
+            // under its UV (the UV grid's nearest where none is).
+            uint32_t hitFace = UINT32_MAX, rowFace = UINT32_MAX;
+            // The source normal at texel (x, y) with weights l1, l2; false when no source face is near.
+            auto sourceNormal = [&](int x, int y, float l1, float l2, glm::vec3 &n) {
+                const glm::vec3 p = tp[0] + l1 * e1 + l2 * e2;
+
+                glm::vec3 weights;
+                if (hitFace != UINT32_MAX && walk->holds(p, hitFace, weights)) {
+                    n = walk->normalAt(hitFace, weights);
+                    return true;
                 }
-                n = walk->normalAt(hitFace, w);
+                const uint32_t start = under[size_t(y - r0) * size_t(width) + size_t(x)];
+                if (start != UINT32_MAX && start != hitFace && walk->holds(p, start, weights)) {
+                    hitFace = start;
+                    n = walk->normalAt(hitFace, weights);
+                    return true;
+                }
+                uint32_t from = hitFace != UINT32_MAX ? hitFace : start;
+                const float l0 = 1.0f - l1 - l2;
+                if (from == UINT32_MAX &&
+                    (from = grid->find(double(l0) * q[0] + double(l1) * q[1] + double(l2) * q[2])) == UINT32_MAX)
+                    return false;
+                const SurfaceWalk::Hit hit = walk->project(p, from, l0 * tn[0] + l1 * tn[1] + l2 * tn[2], 64);
+                hitFace = hit.face;
+                n = walk->normalAt(hit);
                 return true;
             };
             batch.size = 0;
@@ -387,38 +415,41 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
                 const uint32_t stateRow = uint32_t(y) * uint32_t(width),
                                imageRow = uint32_t(height - 1 - y) * uint32_t(width);
                 const double py = y + 0.5 - q[0].y;
-                // Centres inside: the weights step along the row.
-                if (zl <= zr) {
-                    const double px = zl + 0.5 - q[0].x;
-                    double l1 = a1 * px + b1 * py, l2 = a2 * px + b2 * py;
-                    for (int x = zl; x <= zr; ++x, l1 += a1, l2 += a2) {
-                        glm::vec3 n(0.0f);
-                        const float w1 = float(l1), w2 = float(l2);
-                        if (!sourceNormal(x, y, 1.0f - w1 - w2, w1, w2, n))
-                            n = glm::vec3(0.0f);
-                        batch.push(w1, w2, n, stateRow + uint32_t(x), imageRow + uint32_t(x));
-                    }
-                }
-                // Texels the triangle only overlaps, if no centre claimed them: weights clamped
-                // onto it. (No centre of this face lies among them, so gathering them with the
-                // centres keeps the order of claims.)
-                for (int x = cl; x <= cr; ++x) {
-                    if (x == zl && zl <= zr)
-                        x = zr + 1;
-                    if (x > cr)
-                        break;
+                hitFace = rowFace;
+                bool first = true;
+                auto visit = [&](int x, float l1, float l2) {
+                    glm::vec3 n(0.0f);
+                    if (!sourceNormal(x, y, l1, l2, n))
+                        n = glm::vec3(0.0f);
+                    if (first)
+                        rowFace = hitFace, first = false;
+                    batch.push(l1, l2, n, stateRow + uint32_t(x), imageRow + uint32_t(x));
+                };
+                // Texels the triangle only overlaps, if no centre claimed them (no centre of this
+                // face lies among them, so gathering them with the centres keeps the order of
+                // claims): weights clamped onto it.
+                auto overlap = [&](int x) {
                     if (states[stateRow + uint32_t(x)] != 0)
-                        continue;
+                        return;
                     const double px = x + 0.5 - q[0].x;
                     float l1 = float(a1 * px + b1 * py), l2 = float(a2 * px + b2 * py), l0 = 1.0f - l1 - l2;
                     l0 = std::max(l0, 0.0f), l1 = std::max(l1, 0.0f), l2 = std::max(l2, 0.0f);
                     const float sum = l0 + l1 + l2;
                     if (sum > 0)
-                        l0 /= sum, l1 /= sum, l2 /= sum;
-                    glm::vec3 n(0.0f);
-                    if (!sourceNormal(x, y, l0, l1, l2, n))
-                        n = glm::vec3(0.0f);
-                    batch.push(l1, l2, n, stateRow + uint32_t(x), imageRow + uint32_t(x));
+                        l1 /= sum, l2 /= sum;
+                    visit(x, l1, l2);
+                };
+                const bool centres = zl <= zr;
+                for (int x = cl; x <= (centres ? std::min(zl - 1, cr) : cr); ++x)
+                    overlap(x);
+                // Centres inside: the weights step along the row.
+                if (centres) {
+                    const double px = zl + 0.5 - q[0].x;
+                    double l1 = a1 * px + b1 * py, l2 = a2 * px + b2 * py;
+                    for (int x = zl; x <= zr; ++x, l1 += a1, l2 += a2)
+                        visit(x, float(l1), float(l2));
+                    for (int x = std::max(zr + 1, cl); x <= cr; ++x)
+                        overlap(x);
                 }
             });
             solveTexelBatch(targetFrame, batch);
@@ -431,6 +462,7 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
                 }
             }
         }
+
         size_t fromSource = 0, painted = 0;  // local: the bands' counters share cache lines
         for (size_t t = size_t(r0) * size_t(width); t < size_t(r1) * size_t(width); ++t) {
             fromSource += states[t] >> 1;

@@ -30,13 +30,16 @@ struct TexelBatch {
     std::vector<uint32_t> colour;  // R | G << 8 | B << 16 | 255 << 24, each (c + 1) / 2 * 255
     std::vector<uint8_t> solved;   // 1: colour holds the texel; 0: no frame (see solveTexelBatch)
     size_t size = 0;
+    // Room for `count` texels in every array (grown once, kept between triangles).
+    void reserve(size_t count) {
+        if (count <= l1.size())
+            return;
+        for (auto *v : {&l1, &l2, &nx, &ny, &nz})
+            v->resize(count);
+        stateIndex.resize(count), imageIndex.resize(count), colour.resize(count), solved.resize(count);
+    }
+    // Within the room reserve() made.
     void push(float w1, float w2, const glm::vec3 &n, uint32_t state, uint32_t image) {
-        if (size == l1.size()) {
-            const size_t grown = size < 128 ? 256 : 2 * size;
-            for (auto *v : {&l1, &l2, &nx, &ny, &nz})
-                v->resize(grown);
-            stateIndex.resize(grown), imageIndex.resize(grown), colour.resize(grown), solved.resize(grown);
-        }
         l1[size] = w1, l2[size] = w2, nx[size] = n.x, ny[size] = n.y, nz[size] = n.z;
         stateIndex[size] = state, imageIndex[size] = image;
         ++size;
