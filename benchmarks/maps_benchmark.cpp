@@ -49,6 +49,7 @@ void BM_BakeNormalMap(benchmark::State &state) {
     options.width = p.hi.textureWidth;
     options.height = p.hi.textureHeight;
     options.threads = int(state.range(0));
+    options.level = int(state.range(1));
     NormalMap map;
     for (auto _ : state) {
         map = bakeNormalMap(source, target, options);
@@ -60,9 +61,18 @@ void BM_BakeNormalMap(benchmark::State &state) {
     state.counters["height"] = map.height;
     state.counters["texels"] = double(map.texelsBaked);
 }
-// Arg: threads (0 = one per hardware thread). Wall time (the goal) and the process' CPU time of
-// all threads.
-BENCHMARK(BM_BakeNormalMap)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+// Args: threads (0 = one per hardware thread), the map's level (0: the atlas' size, the goal's
+// 8 texels per voxel; 1: half each side, NormalBakeOptions::level). Wall time (the goal) and the
+// process' CPU time of all threads.
+BENCHMARK(BM_BakeNormalMap)
+    ->ArgNames({"threads", "level"})
+    ->Args({1, 0})
+    ->Args({0, 0})
+    ->Args({1, 1})
+    ->Args({0, 1})
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
 
 void BM_MikkTSpace(benchmark::State &state, bool decimated) {
     const Prepared &p = prepared();

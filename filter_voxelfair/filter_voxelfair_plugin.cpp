@@ -241,8 +241,16 @@ void FilterVoxelfairPlugin::initParameterSet(QAction *action, MeshDocument &md, 
     parameters.addParam(RichInt("textureSize", 0, "Texture size",
                                 "Side of a square normal map in texels; 0 takes the base colour texture's width x "
                                 "height (the atlas' layout)."));
-    parameters.addParam(RichInt("dilation", 2, "Gutter rings",
-                                "Rings of texels filled around the charts, as the base colour's (half its gutter)."));
+    parameters.addParam(RichEnum("level", 0,
+                                 QStringList() << "Atlas size"
+                                               << "Half (one texel per 2 x 2 block)",
+                                 "Resolution",
+                                 "Atlas size: the base colour's texel density. Half: half each side, one texel per "
+                                 "2 x 2 texel block of the atlas (its mip 1; the charts are packed on such blocks): a "
+                                 "quarter of the texels, memory and baking time, for smooth surfaces that need no "
+                                 "pixel-art resolution."));
+    parameters.addParam(
+        RichInt("dilation", 2, "Gutter rings", "Rings of the normal map's texels filled around the charts."));
 }
 
 void FilterVoxelfairPlugin::report(const QString &message) {

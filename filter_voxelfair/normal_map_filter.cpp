@@ -100,6 +100,7 @@ bool FilterVoxelfairPlugin::applyNormalMap(MeshDocument &md, const RichParameter
     NormalBakeOptions options;
     options.width = width;
     options.height = height;
+    options.level = parameters.getEnum("level");
     options.dilation = parameters.getInt("dilation");
     if (cb)
         cb(10, "Baking the normal map");
@@ -124,13 +125,14 @@ bool FilterVoxelfairPlugin::applyNormalMap(MeshDocument &md, const RichParameter
         report(
             "Bake Normal Map: the parts of the source layer (nodes, each face's part) restored on the current layer");
     report(QString("Bake Normal Map: %1 texels from layer '%2' (%3 faces) onto %4 faces, %5 (size from %6), "
-                   "MikkTSpace tangents, %7 gutter rings -> %8 in %9 ms")
+                   "level %7, MikkTSpace tangents, %8 gutter rings -> %9 in %10 ms")
                .arg(map.texelsBaked)
                .arg(source->label())
                .arg(source->cm.fn)
                .arg(target.cm.fn)
                .arg(QString("%1 x %2").arg(map.width).arg(map.height))
                .arg(sizeFrom)
+               .arg(options.level)
                .arg(options.dilation)
                .arg(path)
                .arg(timer.elapsed()));

@@ -282,9 +282,13 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
     NormalMap out;
     validate(source, "source");
     validate(target, "target");
-    const int width = options.width, height = options.height > 0 ? options.height : options.width;
-    if (width < 1 || width > 16384 || height < 1 || height > 16384)
+    if (options.width < 1 || options.width > 16384 || options.height < 0 || options.height > 16384)
         throw OptionError("the normal map's sides must be between 1 and 16384 texels");
+    if (options.level < 0 || options.level > 1)
+        throw OptionError("the normal map's level must be 0 (the atlas' size) or 1 (half each side)");
+    // Level 1: one texel per 2 x 2 block (a side of odd length gets a last half block).
+    const int width = (options.width + options.level) >> options.level,
+              height = ((options.height > 0 ? options.height : options.width) + options.level) >> options.level;
     const size_t texels = size_t(width) * size_t(height);
     out.width = width;
     out.height = height;

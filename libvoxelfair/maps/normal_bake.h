@@ -62,7 +62,14 @@ struct NormalBakeOptions {
     // The atlas' texture in texels (the base colour's: UVs are normalised per axis, so a 2:1
     // atlas gets a 2:1 map); height 0 means width (square).
     int width = 0, height = 0;
-    int dilation = 2;  // gutter rings, as the base colour's (half the default gutter of 4)
+    // The map's resolution level, as a mip level of the atlas: 0 the size above; 1 half each side
+    // (rounded up), one texel per aligned 2 x 2 texel block of the atlas. The atlas packs its
+    // charts on such blocks with whole blocks of gutter between them (atlas/packing.h), so every
+    // level-1 texel a chart touches lies in a block of that chart alone: the level-1 map is the
+    // atlas' mip 1 of the full-size map's layout, a quarter of its texels and memory. Smooth
+    // faired surfaces lose little at level 1 (README: the per-model angle table has both).
+    int level = 0;
+    int dilation = 2;  // gutter rings of the map's own texels
     int threads = 0;   // 0: one per hardware thread
 };
 
@@ -78,7 +85,8 @@ struct NormalMap {
 };
 
 // Throws MeshError for empty or inconsistent meshes (no faces, null arrays, indices out of range;
-// the message names the source or target mesh) and OptionError for a side outside [1, 16384]
+// the message names the source or target mesh) and OptionError for a side outside [1, 16384] or
+// a level outside [0, 1]
 // (the library's one error style, base/error.h).
 NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &target, const NormalBakeOptions &options);
 

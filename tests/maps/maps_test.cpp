@@ -148,7 +148,10 @@ TEST(NormalBake, NormalFieldsOnRandomPlanesReadBackThroughTheShaderFrame) {
         // Square maps, and 2:1 ones (a wide atlas: UVs normalised per axis).
         options.width = 256;
         options.height = trial % 3 == 2 ? 128 : 256;
+        options.level = trial / 6;  // the last six at level 1: one texel per 2 x 2 block
         const NormalMap map = bakeNormalMap(view(fine), view(coarse), options);
+        EXPECT_EQ(map.width, 256 >> options.level);
+        EXPECT_EQ(map.height, options.height >> options.level);
         EXPECT_EQ(map.texelsWithoutSource, 0u);
         // Texel centres inside coarse triangles: the decoded normal is the fine one there.
         double worst = 0;
@@ -232,6 +235,10 @@ TEST(NormalBake, RefusesEmptyOrBrokenInputWithAMessage) {
     EXPECT_NE(thrown<OptionError>(view(g), view(g), options).find("between 1 and 16384"), std::string::npos);
     options.width = 16, options.height = 20000;
     EXPECT_NE(thrown<OptionError>(view(g), view(g), options).find("between 1 and 16384"), std::string::npos);
+    options.height = 16, options.level = 2;
+    EXPECT_NE(thrown<OptionError>(view(g), view(g), options).find("level must be 0"), std::string::npos);
+    options.level = 1, options.width = 15;  // odd sides: a last half block
+    EXPECT_EQ(bakeNormalMap(view(g), view(g), options).width, 8);
 }
 
 TEST(NormalBake, TheMapIsTheSameOnAnyNumberOfThreads) {
@@ -250,13 +257,14 @@ TEST(NormalBake, TheMapIsTheSameOnAnyNumberOfThreads) {
         NormalBakeOptions options;
         options.width = 512;
         options.height = trial < 2 ? 512 : 256;
+        options.level = trial % 2;
         options.threads = 1;
         const NormalMap one = bakeNormalMap(view(fine), view(coarse), options);
         for (int threads : {2, 3, 8}) {
             options.threads = threads;
             const NormalMap many = bakeNormalMap(view(fine), view(coarse), options);
             EXPECT_EQ(many.texelsBaked, one.texelsBaked);
-            EXPECT_GT(many.texelsBaked, size_t(options.width) * size_t(options.height) / 20);
+            EXPECT_GT(many.texelsBaked, size_t(many.width) * size_t(many.height) / 20);
             EXPECT_TRUE(many.rgba == one.rgba) << threads << " threads";
         }
     }

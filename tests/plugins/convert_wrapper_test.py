@@ -207,6 +207,20 @@ class ConvertWrapper(unittest.TestCase):
         self.assertIn("--lods bakes a normal map for every level", output)
         self.assertFalse((self.work / "lods").exists(), output)
 
+    def test_a_half_resolution_normal_map_is_half_the_base_colour_each_side(self):
+        code, output = wrapper(self.work, "models/tank.vxl", "-o", "half", "--formats", "glb",
+                               "--normal-map-resolution", "half")
+        self.assertEqual(code, 0, output)
+        import struct
+        def size(png):
+            return struct.unpack(">II", png.read_bytes()[16:24])
+        texture = size(self.work / "half" / "tank_texture.png")
+        self.assertEqual(size(self.work / "half" / "tank_normal.png"), ((texture[0] + 1) // 2, (texture[1] + 1) // 2))
+        self.assertIn("level 1", output)
+        validator = subprocess.run(["node", str(HERE.parent.parent / "tools" / "gltf_validate.js"),
+                                    str(self.work / "half" / "tank.glb")], capture_output=True, text=True)
+        self.assertIn("0 errors, 0 warnings", validator.stdout)
+
     def test_without_decimation_or_with_no_normal_map_no_normal_map_is_written(self):
         for options in (["--decimate", "1"], ["--no-normal-map"]):
             code, output = wrapper(self.work, "models/tank.vxl", "-o", "plain", "--formats", "obj", *options)

@@ -37,6 +37,7 @@ std::string pipelineScript(const std::string &dir, const std::string &texture, d
                                                           {"@TEXTURE_FILE@", texture},
                                                           {"@DECIMATION@", std::to_string(decimation)},
                                                           {"@NORMAL_FILE@", dir + "/normal.png"},
+                                                          {"@NORMAL_LEVEL@", "0"},
                                                           {"@HOUSE_FILE@", dir + "/house.png"},
                                                           {"@METAL_ROUGH_FILE@", dir + "/metallic_roughness.png"},
                                                           {"@EMISSIVE_FILE@", dir + "/emissive.png"},
