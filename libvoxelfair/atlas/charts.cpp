@@ -1,5 +1,6 @@
 #include "atlas/charts.h"
 
+#include "atlas/chart_merge.h"
 #include "atlas/chart_overlap.h"
 #include "atlas/edge_adjacency.h"
 #include "atlas/seed_plane.h"
@@ -73,9 +74,7 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
     // Per face, the unit normal that chooses seeds and cones (the caller's when usable, else the
     // geometric one) and the unit geometric normal; both zero for a degenerate face, which so
     // never passes a cone test (cone >= 0.05). Side by side for the breadth-first search.
-    struct FaceNormals {
-        glm::vec3 cone, geometric;
-    };
+    using FaceNormals = ChartFaceNormals;
     std::vector<FaceNormals> normals(faceCount, FaceNormals{glm::vec3(0.0f), glm::vec3(0.0f)});
     std::vector<uint8_t> degenerate(faceCount, 0);
     for (size_t f = 0; f < faceCount; ++f) {
@@ -178,8 +177,7 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
         glm::vec2 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
         for (glm::vec2 *w = uv; w != uvEnd; ++faces)
             for (int k = 0; k < 3; ++k, ++w) {
-                const glm::dvec3 d = glm::dvec3(mesh.positions[mesh.triangles[3 * *faces + k]]) - origin;
-                *w = glm::vec2(glm::dvec2(glm::dot(d, plane.t1), glm::dot(d, plane.t2)) * scale);
+                *w = projectOnPlane(plane, origin, mesh.positions[mesh.triangles[3 * *faces + k]], scale);
                 lo = glm::min(lo, *w);
                 hi = glm::max(hi, *w);
             }
@@ -272,6 +270,12 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
         out.chartFaces.push_back(uint32_t(f));
     }
     out.chartFirstFace.push_back(uint32_t(out.chartFaces.size()));
+
+    // Small charts into their neighbours, within the wider cone (chart_merge.h).
+    ChartMergeOptions merge;
+    merge.mostFaces = options.mergeFaces;
+    merge.minCosine = std::max(0.05f, std::min(options.mergeCosine, cone));
+    out.mergedCharts = mergeSmallCharts(mesh, adjacency.opposite.data(), normals.data(), merge, out);
     return out;
 }
 

@@ -12,13 +12,16 @@
 //     round a vertex past a gap so that its faces there overlap, is cut
 //     back to the half of its faces nearest the seed until it does not (chart_overlap.h), so
 //     no texel is shared by two faces.
+//   * Beyond the paper: charts of a few faces (the rounded corners of a faired voxel model) move
+//     whole into an edge-adjacent chart within a wider cone around its axis (chart_merge.h),
+//     so there are fewer, larger charts; the faces they move to get stretch up to 1 / mergeCosine.
 //   * Projection: orthographic onto the seed plane (seed_plane.h), in model units (times the
 //     mesh's faceTexelScale, when given), so every chart has the same texel density once packed. UVs are per wedge (3 per face): a vertex on
 //     a chart border simply gets one UV per chart, which is the paper's vertex cloning.
 //
 // Stretch: a face at angle t to its seed normal is shrunk by cos t across one direction and kept
 // along the other, so the singular values of the (density-normalised) map from the surface to
-// UV are 1 and cos t >= minSeedCosine. Both cone tests below use the geometric normal too, so
+// UV are 1 and cos t >= minSeedCosine (>= mergeCosine for faces of merged small charts). Both cone tests below use the geometric normal too, so
 // the bound holds even with caller-given normals.
 //
 // Degenerate faces (area below 1e-6 of the squared longest edge, or a vertex not finite) have
@@ -44,6 +47,12 @@ struct ChartOptions {
     // states theta_min = 60 degrees, i.e. 0.5. Clamped to [0.05, 1]: the cone must stay inside
     // the hemisphere, or faces would fold over in the projection.
     float minSeedCosine = 0.7f;
+    // Beyond the paper (chart_merge.h): a chart of at most mergeFaces faces moves whole into an
+    // edge-adjacent chart when all its faces lie within mergeCosine of that chart's axis (0.5:
+    // the paper's 60 degrees, for these faces only; never narrower than minSeedCosine) and
+    // overlap none of its faces there. 0 turns merging off.
+    size_t mergeFaces = 8;
+    float mergeCosine = 0.5f;
 };
 
 struct AtlasCharts {
@@ -66,6 +75,7 @@ struct AtlasCharts {
     size_t nonFiniteFaces = 0;      // faces with a vertex that is not finite
     size_t ignoredNormals = 0;      // given normals not finite, zero, or outside the face's own cone
     size_t foldedCharts = 0;        // times a chart winding over itself in UV was cut back
+    size_t mergedCharts = 0;        // small charts moved into a neighbour (chart_merge.h)
     size_t separatedFaces = 0;      // thin faces given their own chart for crisp colours (crowded_faces.h)
     size_t nonManifoldEdges = 0;    // edges of three or more faces, used as chart borders
     size_t borderEdges = 0;         // edges of one face (open meshes)

@@ -12,6 +12,8 @@
 
 #include <cmath>
 
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 namespace voxelfair {
@@ -25,6 +27,13 @@ inline SeedPlane seedPlane(const glm::dvec3 &n) {
     const double a = -1.0 / (sign + n.z);
     const double b = n.x * n.y * a;
     return {glm::dvec3(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x), glm::dvec3(b, sign + n.y * n.y * a, -n.y)};
+}
+
+// Point p on the plane, relative to `origin`, times the texel scale: the one expression every
+// projection of a chart uses, so a vertex shared by two of its faces gets the same UV bits.
+inline glm::vec2 projectOnPlane(const SeedPlane &plane, const glm::dvec3 &origin, const glm::vec3 &p, double scale) {
+    const glm::dvec3 d = glm::dvec3(p) - origin;
+    return glm::vec2(glm::dvec2(glm::dot(d, plane.t1), glm::dot(d, plane.t2)) * scale);
 }
 
 }  // namespace voxelfair

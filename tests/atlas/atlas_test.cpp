@@ -101,6 +101,9 @@ glm::dvec3 geometricNormal(const TestMesh &m, size_t f) {
 }
 
 // Everything an atlas must satisfy, whatever the mesh and options.
+// The widest cone of the default charts: merged small charts' faces (chart_merge.h).
+const float kMergeCone = ChartOptions().mergeCosine;
+
 void expectValidAtlas(const TestMesh &mesh, const AtlasCharts &charts, const AtlasLayout &layout, float cone) {
     SCOPED_TRACE(mesh.name + ", " + toString(layout.mode));
     ASSERT_EQ(layout.wedgeUv.size(), 3 * mesh.faceCount());
@@ -292,6 +295,7 @@ TEST(Charts, FollowSection45OnEveryFamily) {
             SCOPED_TRACE(mesh.name + " cone " + std::to_string(cone));
             ChartOptions options;
             options.minSeedCosine = cone;
+            options.mergeFaces = 0;  // the paper's charts (merging: SmallChartsMoveIntoTheirNeighbours)
             const AtlasCharts charts = computeCharts(mesh.view(), options);
             ASSERT_EQ(charts.chartFaces.size(), mesh.faceCount());
             float lastPriority = 2;
@@ -332,6 +336,62 @@ TEST(Charts, FollowSection45OnEveryFamily) {
     }
 }
 
+// Beyond the paper (chart_merge.h): charts of at most mergeFaces faces move whole into a
+// neighbour whose axis is within mergeCosine of all their faces. Fewer charts on every family,
+// each still edge-connected, every face within the wider cone, the unmerged faces' UVs unchanged
+// (up to the chart's shift), and no overlap once packed.
+TEST(Charts, SmallChartsMoveIntoTheirNeighbours) {
+    size_t before = 0, after = 0;
+    for (const TestMesh &mesh : families()) {
+        SCOPED_TRACE(mesh.name);
+        ChartOptions off;
+        off.mergeFaces = 0;
+        const AtlasCharts paper = computeCharts(mesh.view(), off), charts = computeCharts(mesh.view());
+        EXPECT_EQ(paper.mergedCharts, 0u);
+        EXPECT_EQ(charts.chartCount() + charts.mergedCharts, paper.chartCount());
+        before += paper.chartCount();
+        after += charts.chartCount();
+        const EdgeAdjacency adjacency =
+            buildEdgeAdjacency(mesh.triangles.data(), mesh.faceCount(), mesh.positions.size());
+        for (size_t c = 0; c < charts.chartCount(); ++c) {
+            const uint32_t first = charts.chartFirstFace[c], end = charts.chartFirstFace[c + 1];
+            if (charts.isDegenerate(c))
+                continue;
+            // Connected: a flood over the chart's own edges from its seed reaches every face.
+            std::set<uint32_t> reached = {charts.chartFaces[first]};
+            std::vector<uint32_t> stack = {charts.chartFaces[first]};
+            while (!stack.empty()) {
+                const uint32_t f = stack.back();
+                stack.pop_back();
+                for (int k = 0; k < 3; ++k) {
+                    const uint32_t o = adjacency.opposite[3 * f + k];
+                    if (o != kNoOpposite && charts.faceChart[o / 3] == c && reached.insert(o / 3).second)
+                        stack.push_back(o / 3);
+                }
+            }
+            EXPECT_EQ(reached.size(), end - first) << "chart " << c << " is not edge-connected";
+            const uint32_t seed = charts.chartFaces[first];
+            EXPECT_EQ(paper.chartAxis[paper.faceChart[seed]], charts.chartAxis[c]);
+            for (uint32_t i = first; i < end; ++i) {
+                const uint32_t f = charts.chartFaces[i];
+                EXPECT_GE(glm::dot(glm::dvec3(charts.chartAxis[c]), geometricNormal(mesh, f)), kMergeCone - 1e-6);
+                // A face charted with the seed keeps its UVs up to one shift for the whole chart.
+                if (paper.faceChart[f] != paper.faceChart[seed])
+                    continue;
+                const uint32_t j = paper.chartFirstFace[paper.faceChart[f]] + (i - first);
+                ASSERT_EQ(paper.chartFaces[j], f);
+                const glm::vec2 shift = charts.wedgeUv[3 * size_t(first)] -
+                                        paper.wedgeUv[3 * size_t(paper.chartFirstFace[paper.faceChart[f]])];
+                for (int k = 0; k < 3; ++k)
+                    EXPECT_LE(glm::length(charts.wedgeUv[3 * size_t(i) + k] - paper.wedgeUv[3 * size_t(j) + k] - shift),
+                              1e-3f);
+            }
+        }
+        expectValidAtlas(mesh, charts, packCharts(charts), kMergeCone);
+    }
+    EXPECT_LT(after, before);
+}
+
 TEST(Charts, RawVoxelSurfacesSplitIntoPlanarRegions) {
     const TestMesh box = voxelBox(4, 3, 2);
     const AtlasCharts charts = computeCharts(box.view());
@@ -348,7 +408,7 @@ TEST(Charts, AChartWindingOverItselfIsCutBack) {
     EXPECT_GT(charts.foldedCharts, 0u);
     EXPECT_GE(charts.chartCount(), 2u);
     const AtlasLayout layout = packCharts(charts);
-    expectValidAtlas(ramp, charts, layout, 0.7f);  // includes: no texel centre under two faces
+    expectValidAtlas(ramp, charts, layout, kMergeCone);  // includes: no texel centre under two faces
 }
 
 // Two faces at one vertex whose sectors overlap (the chart went round the vertex past a gap)
@@ -379,7 +439,7 @@ TEST(Charts, UnsharedCornersAreMatchedByPosition) {
     EXPECT_FALSE(a.weldedByPosition);
     EXPECT_TRUE(b.weldedByPosition);
     EXPECT_EQ(a.faceChart, b.faceChart);
-    expectValidAtlas(loose, b, packCharts(b), 0.7f);
+    expectValidAtlas(loose, b, packCharts(b), kMergeCone);
 }
 
 TEST(Charts, WiderConeGivesFewerCharts) {
@@ -414,7 +474,7 @@ TEST(Charts, GivenNormalsDriveTheConeButNeverFoldAFace) {
     view.faceNormals = normals.data();
     const AtlasCharts given = computeCharts(view);
     EXPECT_EQ(given.ignoredNormals, 2u);
-    expectValidAtlas(sphere, given, packCharts(given), 0.7f);
+    expectValidAtlas(sphere, given, packCharts(given), kMergeCone);
 
     // Normals snapped to the nearest axis where that stays in the face's cone: other seeds and
     // cones, yet the geometric test keeps every face within the stretch bound.
@@ -430,7 +490,7 @@ TEST(Charts, GivenNormalsDriveTheConeButNeverFoldAFace) {
     const AtlasCharts snapped = computeCharts(view);
     EXPECT_EQ(snapped.ignoredNormals, 0u);
     EXPECT_NE(snapped.faceChart, computeCharts(sphere.view()).faceChart);
-    expectValidAtlas(sphere, snapped, packCharts(snapped), 0.7f);
+    expectValidAtlas(sphere, snapped, packCharts(snapped), kMergeCone);
 }
 
 TEST(Packing, EveryFamilyEveryModeIsValid) {
@@ -441,7 +501,7 @@ TEST(Packing, EveryFamilyEveryModeIsValid) {
             density.mode = mode;
             density.texelsPerUnit = 8;
             const AtlasLayout byDensity = packCharts(charts, density);
-            expectValidAtlas(mesh, charts, byDensity, 0.7f);
+            expectValidAtlas(mesh, charts, byDensity, kMergeCone);
             EXPECT_FALSE(byDensity.densityReduced);
             // The density is a minimum, raised to fill the texture (tight packing).
             EXPECT_GE(byDensity.texelsPerUnit, 8.0);
@@ -462,7 +522,7 @@ TEST(Packing, EveryFamilyEveryModeIsValid) {
             PackOptions least = density;
             least.fillTexture = false;
             const AtlasLayout atLeast = packCharts(charts, least);
-            expectValidAtlas(mesh, charts, atLeast, 0.7f);
+            expectValidAtlas(mesh, charts, atLeast, kMergeCone);
             EXPECT_EQ(atLeast.texelsPerUnit, 8.0);
             EXPECT_EQ(atLeast.width, filled.width);
             EXPECT_EQ(atLeast.height, filled.height);
@@ -477,7 +537,7 @@ TEST(Packing, EveryFamilyEveryModeIsValid) {
             PackOptions fixed = density;
             fixed.textureSize = 256;
             const AtlasLayout bySize = packCharts(charts, fixed);
-            expectValidAtlas(mesh, charts, bySize, 0.7f);
+            expectValidAtlas(mesh, charts, bySize, kMergeCone);
             EXPECT_EQ(bySize.size, 256);
         }
 }
@@ -544,7 +604,7 @@ TEST(Packing, DensityIsLoweredToFitTheLargestTexture) {
     options.texelsPerUnit = 64;
     options.maxTextureSize = 256;
     const AtlasLayout layout = packCharts(charts, options);
-    expectValidAtlas(mesh, charts, layout, 0.7f);
+    expectValidAtlas(mesh, charts, layout, kMergeCone);
     EXPECT_TRUE(layout.densityReduced);
     EXPECT_FALSE(layout.note.empty());
     EXPECT_EQ(layout.size, 256);
@@ -755,5 +815,5 @@ TEST(BadInput, NonManifoldEdgesAreChartBorders) {
     const TestMesh mesh = edgeTouchingVoxels();
     const AtlasCharts charts = computeCharts(mesh.view());
     EXPECT_EQ(charts.nonManifoldEdges, 1u);
-    expectValidAtlas(mesh, charts, packCharts(charts), 0.7f);
+    expectValidAtlas(mesh, charts, packCharts(charts), kMergeCone);
 }

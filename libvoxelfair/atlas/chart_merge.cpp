@@ -1,0 +1,199 @@
+#include "atlas/chart_merge.h"
+
+#include "atlas/edge_adjacency.h"
+#include "atlas/seed_plane.h"
+
+#include <algorithm>
+#include <limits>
+#include <numeric>
+#include <vector>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+namespace voxelfair {
+namespace {
+
+constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
+
+double orient(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
+    return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
+
+// Whether an edge line of counter-clockwise triangle `t` has all of `u` on its closed outer side.
+bool separates(const glm::vec2 *t, const glm::vec2 *u) {
+    for (int k = 0; k < 3; ++k) {
+        const glm::dvec2 a(t[k]), b(t[(k + 1) % 3]);
+        if (orient(a, b, glm::dvec2(u[0])) <= 0 && orient(a, b, glm::dvec2(u[1])) <= 0 &&
+            orient(a, b, glm::dvec2(u[2])) <= 0)
+            return true;
+    }
+    return false;
+}
+
+// Whether two counter-clockwise triangles' interiors overlap.
+bool overlap(const glm::vec2 *t, const glm::vec2 *u) { return !separates(t, u) && !separates(u, t); }
+
+struct Box {
+    glm::vec2 lo{std::numeric_limits<float>::max()}, hi{-std::numeric_limits<float>::max()};
+    void add(const glm::vec2 *t) {
+        for (int k = 0; k < 3; ++k) {
+            lo = glm::min(lo, t[k]);
+            hi = glm::max(hi, t[k]);
+        }
+    }
+    bool meets(const Box &o) const { return lo.x < o.hi.x && o.lo.x < hi.x && lo.y < o.hi.y && o.lo.y < hi.y; }
+};
+
+}  // namespace
+
+size_t mergeSmallCharts(const AtlasMesh &mesh, const uint32_t *opposite, const ChartFaceNormals *normals,
+                        const ChartMergeOptions &options, AtlasCharts &charts) {
+    const size_t chartCount = charts.chartCount();
+    if (options.mostFaces == 0 || chartCount < 2)
+        return 0;
+    const size_t faceCount = charts.faceCount();
+    auto scaleOf = [&](uint32_t f) { return mesh.faceTexelScale ? mesh.faceTexelScale[f] : 1.0f; };
+
+    // Each chart's faces as a list (head, tail, next), UVs per face (3f + k) in its chart's frame:
+    // the chart's seed plane and origin, minus the shift `lo` that put its box at the origin.
+    std::vector<uint32_t> head(chartCount), tail(chartCount), count(chartCount), next(faceCount, kNone);
+    std::vector<glm::vec2> uv(3 * faceCount), lo(chartCount);
+    std::vector<uint32_t> &chartOf = charts.faceChart;
+    for (size_t c = 0; c < chartCount; ++c) {
+        const uint32_t first = charts.chartFirstFace[c], end = charts.chartFirstFace[c + 1];
+        head[c] = charts.chartFaces[first];
+        tail[c] = charts.chartFaces[end - 1];
+        count[c] = end - first;
+        for (uint32_t i = first; i < end; ++i) {
+            const uint32_t f = charts.chartFaces[i];
+            if (i + 1 < end)
+                next[f] = charts.chartFaces[i + 1];
+            std::copy_n(&charts.wedgeUv[3 * size_t(i)], 3, &uv[3 * size_t(f)]);
+        }
+        lo[c] = -charts.wedgeUv[3 * size_t(first)];  // the seed's first corner projects to (0, 0)
+    }
+
+    // Small charts, smallest first (seed order among equals).
+    std::vector<uint32_t> small;
+    for (size_t c = 0; c < chartCount; ++c)
+        if (!charts.isDegenerate(c) && count[c] <= options.mostFaces)
+            small.push_back(uint32_t(c));
+    std::stable_sort(small.begin(), small.end(), [&](uint32_t a, uint32_t b) { return count[a] < count[b]; });
+
+    struct Candidate {
+        uint32_t chart;
+        float cosine;
+    };
+    std::vector<Candidate> candidates;
+    std::vector<uint32_t> faces;
+    std::vector<glm::vec2> moved;
+    size_t merged = 0;
+    for (const uint32_t b : small) {
+        if (count[b] == 0 || count[b] > options.mostFaces)
+            continue;
+        faces.clear();
+        for (uint32_t f = head[b]; f != kNone; f = next[f])
+            faces.push_back(f);
+        const float scale = scaleOf(faces[0]);
+        candidates.clear();
+        for (const uint32_t f : faces)
+            for (uint32_t h = 3 * f; h < 3 * f + 3; ++h) {
+                const uint32_t o = opposite[h];
+                if (o == kNoOpposite)
+                    continue;
+                const uint32_t a = chartOf[o / 3];
+                if (a == b || charts.isDegenerate(a) || scaleOf(o / 3) != scale ||
+                    std::any_of(candidates.begin(), candidates.end(), [&](const Candidate &k) { return k.chart == a; }))
+                    continue;
+                float least = 1;
+                for (const uint32_t g : faces)
+                    least = std::min({least, glm::dot(charts.chartAxis[a], normals[g].cone),
+                                      glm::dot(charts.chartAxis[a], normals[g].geometric)});
+                candidates.push_back({a, least});
+            }
+        std::sort(candidates.begin(), candidates.end(), [&](const Candidate &x, const Candidate &y) {
+            return x.cosine != y.cosine ? x.cosine > y.cosine : count[x.chart] > count[y.chart];
+        });
+        for (const Candidate &k : candidates) {
+            if (k.cosine < options.minCosine)
+                break;
+            const uint32_t a = k.chart;
+            // b's faces on a's plane, as a's own projection would place them.
+            const SeedPlane plane = seedPlane(glm::normalize(glm::dvec3(charts.chartAxis[a])));
+            const glm::dvec3 origin = mesh.positions[mesh.triangles[3 * size_t(head[a])]];
+            moved.resize(3 * faces.size());
+            Box box;
+            bool fits = true;
+            for (size_t i = 0; i < faces.size() && fits; ++i) {
+                glm::vec2 *t = &moved[3 * i];
+                for (int c = 0; c < 3; ++c)
+                    t[c] =
+                        projectOnPlane(plane, origin, mesh.positions[mesh.triangles[3 * size_t(faces[i]) + c]], scale) -
+                        lo[a];
+                fits = orient(glm::dvec2(t[0]), glm::dvec2(t[1]), glm::dvec2(t[2])) > 0;
+                box.add(t);
+                for (size_t j = 0; j < i && fits; ++j)
+                    fits = !overlap(t, &moved[3 * j]);
+            }
+            for (uint32_t f = head[a]; f != kNone && fits; f = next[f]) {
+                Box fb;
+                fb.add(&uv[3 * size_t(f)]);
+                if (!fb.meets(box))
+                    continue;
+                for (size_t i = 0; i < faces.size() && fits; ++i)
+                    fits = !overlap(&uv[3 * size_t(f)], &moved[3 * i]);
+            }
+            if (!fits)
+                continue;
+            for (size_t i = 0; i < faces.size(); ++i) {
+                std::copy_n(&moved[3 * i], 3, &uv[3 * size_t(faces[i])]);
+                chartOf[faces[i]] = a;
+            }
+            next[tail[a]] = head[b];
+            tail[a] = tail[b];
+            count[a] += count[b];
+            count[b] = 0;
+            ++merged;
+            break;
+        }
+    }
+    if (merged == 0)
+        return 0;
+
+    // The charts again, emptied ones left out, each re-boxed to the origin.
+    AtlasCharts out;
+    std::vector<uint32_t> renumber(chartCount, kNone);
+    for (size_t c = 0; c < chartCount; ++c) {
+        if (count[c] == 0)
+            continue;
+        renumber[c] = uint32_t(out.chartAxis.size());
+        out.chartAxis.push_back(charts.chartAxis[c]);
+        out.chartFirstFace.push_back(uint32_t(out.chartFaces.size()));
+        glm::vec2 least(std::numeric_limits<float>::max()), most(-std::numeric_limits<float>::max());
+        for (uint32_t f = head[c]; f != kNone; f = next[f]) {
+            out.chartFaces.push_back(f);
+            for (int k = 0; k < 3; ++k) {
+                least = glm::min(least, uv[3 * size_t(f) + k]);
+                most = glm::max(most, uv[3 * size_t(f) + k]);
+            }
+        }
+        if (charts.isDegenerate(c))  // fixed texel UVs: left as they are
+            least = glm::vec2(0.0f), most = charts.chartSize[c];
+        out.chartSize.push_back(most - least);
+        for (size_t i = out.chartFirstFace.back(); i < out.chartFaces.size(); ++i)
+            for (int k = 0; k < 3; ++k)
+                out.wedgeUv.push_back(uv[3 * size_t(out.chartFaces[i]) + k] - least);
+    }
+    out.chartFirstFace.push_back(uint32_t(out.chartFaces.size()));
+    for (uint32_t &c : chartOf)
+        c = renumber[c];
+    charts.chartFirstFace = std::move(out.chartFirstFace);
+    charts.chartFaces = std::move(out.chartFaces);
+    charts.chartAxis = std::move(out.chartAxis);
+    charts.chartSize = std::move(out.chartSize);
+    charts.wedgeUv = std::move(out.wedgeUv);
+    return merged;
+}
+
+}  // namespace voxelfair
