@@ -7,6 +7,7 @@ namespace voxelfair {
 void rasterizeChartBitmaps(const AtlasCharts &charts, const ChartMasks &fine, ChartMasks &coarse, int64_t leastBlocks,
                            ChartBitmaps &out) {
     out.first.assign(charts.chartCount(), ChartBitmaps::kNone);
+    out.setBlocks.assign(charts.chartCount(), 0);
     out.bits.clear();
     const int pad = fine.padding;
     for (size_t c = 0; c < charts.chartCount(); ++c) {
@@ -38,6 +39,7 @@ void rasterizeChartBitmaps(const AtlasCharts &charts, const ChartMasks &fine, Ch
                 set += bits[size_t(y) * m.width + x];
         }
         coarse.totalRowTexels -= spans - set;
+        out.setBlocks[c] = set;
     }
 }
 

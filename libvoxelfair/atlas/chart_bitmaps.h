@@ -25,6 +25,8 @@ struct ChartBitmaps {
     static constexpr size_t kNone = SIZE_MAX;
     std::vector<size_t> first;
     std::vector<uint8_t> bits;
+    // Per chart: the blocks its bitmap sets (0 without one), counted when it is built.
+    std::vector<size_t> setBlocks;
     bool has(size_t chart) const { return chart < first.size() && first[chart] != kNone; }
     const uint8_t *of(size_t chart) const { return bits.data() + first[chart]; }
 };

@@ -120,9 +120,7 @@ double fillScale(const Packing &packing, int side, int height, double efficiency
             continue;
         now[c] = 0;
         if (b > 1 && packing.bitmaps.has(c)) {
-            const uint8_t *bits = packing.bitmaps.of(c);
-            for (size_t k = 0; k < size_t(m.width) * size_t(m.height); ++k)
-                now[c] += bits[k];
+            now[c] = double(packing.bitmaps.setBlocks[c]);
             continue;
         }
         const int16_t *l = m.rowLeft(masks.profiles), *r = m.rowRight(masks.profiles);
