@@ -6,6 +6,7 @@
 #pragma once
 
 #include "atlas/atlas_mesh.h"
+#include "atlas/texture_atlas.h"
 
 #include <algorithm>
 #include <cmath>
@@ -39,6 +40,12 @@ struct TestMesh {
         return m;
     }
 };
+
+// The atlas of `mesh` at `texelsPerUnit` (PackOptions::texelsPerUnit), the other options as given.
+inline TextureAtlas atlasAt(const TestMesh &mesh, float texelsPerUnit, AtlasOptions options = {}) {
+    options.pack.texelsPerUnit = texelsPerUnit;
+    return buildTextureAtlas(mesh.view(), options);
+}
 
 // A pixel-art colour per voxel: neighbours almost always differ.
 inline glm::u8vec3 voxelColour(int x, int y, int z) {

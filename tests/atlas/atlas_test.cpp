@@ -620,9 +620,7 @@ TEST(Packing, IsDeterministic) {
 TEST(Bake, CrispColoursSurviveNearestAndBilinearSampling) {
     for (const TestMesh &mesh : families()) {
         SCOPED_TRACE(mesh.name);
-        AtlasOptions options;
-        options.pack.texelsPerUnit = 16;
-        const TextureAtlas atlas = buildTextureAtlas(mesh.view(), options);
+        const TextureAtlas atlas = atlasAt(mesh, 16);
         EXPECT_EQ(atlas.texture.source, BakeSource::FaceColours);
         const ColourFidelity f = measureColourFidelity(mesh.view(), atlas.layout, atlas.texture);
         EXPECT_EQ(f.guaranteedNearestMatches, f.guaranteedNearest);
@@ -675,9 +673,7 @@ TEST(Bake, DilationFillsExactlyTheRequestedRings) {
 TEST(Bake, MipBlocksHoldOneChartEach) {
     for (const TestMesh &mesh : families()) {
         SCOPED_TRACE(mesh.name);
-        AtlasOptions options;
-        options.pack.texelsPerUnit = 8;
-        const TextureAtlas atlas = buildTextureAtlas(mesh.view(), options);
+        const TextureAtlas atlas = atlasAt(mesh, 8);
         ASSERT_EQ(atlas.layout.block, 2);
         ASSERT_EQ(atlas.layout.gutter, 2);
         const int width = atlas.texture.width, height = atlas.texture.height;
@@ -718,8 +714,7 @@ TEST(Bake, GouraudStaysBetweenTheVertexColours) {
     const TestMesh mesh = smoothed(voxelSphere(6));
     AtlasOptions options;
     options.bake.source = BakeSource::VertexColours;
-    options.pack.texelsPerUnit = 8;
-    const TextureAtlas atlas = buildTextureAtlas(mesh.view(), options);
+    const TextureAtlas atlas = atlasAt(mesh, 8, options);
     EXPECT_EQ(atlas.texture.source, BakeSource::VertexColours);
     const int size = atlas.texture.width, height = atlas.texture.height;
     for (size_t f = 0; f < mesh.faceCount(); ++f) {

@@ -76,9 +76,8 @@ TEST(CrowdedFaces, EveryInteriorPointKeepsItsColourOnEveryFamily) {
             for (PackMode mode : {PackMode::Tight, PackMode::Paper}) {
                 SCOPED_TRACE(mesh.name + " at " + std::to_string(density) + " texels per voxel, " + toString(mode));
                 AtlasOptions options;
-                options.pack.texelsPerUnit = density;
                 options.pack.mode = mode;
-                const TextureAtlas atlas = buildTextureAtlas(mesh.view(), options);
+                const TextureAtlas atlas = atlasAt(mesh, density, options);
                 EXPECT_TRUE(atlas.crispGuaranteed) << atlas.crowded.crowdedFaces << " crowded faces";
                 EXPECT_EQ(wrongSamples(mesh, atlas), 0u) << atlas.charts.separatedFaces << " faces separated";
                 if (density == 8.0f && mode == PackMode::Tight)
@@ -99,15 +98,14 @@ TEST(CrowdedFaces, WithoutSeparationFairedMeshesLoseSamples) {
     size_t lost = 0, separated = 0;
     for (const TestMesh &mesh : families()) {
         AtlasOptions options;
-        options.pack.texelsPerUnit = 8;
         options.pack.fillTexture = false;  // exactly 8: the fill's higher density may spare them
         options.maxSeparatedShare = 0;
-        const TextureAtlas plain = buildTextureAtlas(mesh.view(), options);
+        const TextureAtlas plain = atlasAt(mesh, 8, options);
         EXPECT_EQ(plain.charts.separatedFaces, 0u);
         EXPECT_FALSE(plain.crispGuaranteed);
         lost += wrongSamples(mesh, plain);
         options.maxSeparatedShare = 0.1;
-        separated += buildTextureAtlas(mesh.view(), options).charts.separatedFaces;
+        separated += atlasAt(mesh, 8, options).charts.separatedFaces;
     }
     EXPECT_GT(lost, 0u);
     EXPECT_GT(separated, 0u);
@@ -165,9 +163,7 @@ TEST(CrowdedFaces, SeparatedFacesAreOneFaceChartsOnTheirOwnPlane) {
 TEST(CrowdedFaces, TooCoarseADensityIsRaisedNotShredded) {
     for (const TestMesh &mesh : families()) {
         SCOPED_TRACE(mesh.name);
-        AtlasOptions options;
-        options.pack.texelsPerUnit = 2;
-        const TextureAtlas atlas = buildTextureAtlas(mesh.view(), options);
+        const TextureAtlas atlas = atlasAt(mesh, 2);
         EXPECT_TRUE(atlas.crispGuaranteed);
         EXPECT_EQ(wrongSamples(mesh, atlas), 0u);
         EXPECT_LE(double(atlas.charts.separatedFaces), 0.1 * double(mesh.faceCount()));
