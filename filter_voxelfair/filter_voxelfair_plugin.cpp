@@ -199,8 +199,12 @@ void FilterVoxelfairPlugin::initParameterSet(QAction *action, MeshModel &m, Rich
                                        "The PNG to write (greyscale, the base colour's size): a relative name is put "
                                        "beside the mesh's file."));
         parameters.addParam(
-            RichInt("dilation", 2, "Gutter rings",
-                    "Rings of texels filled around the charts, as the base colour's (half its gutter)."));
+            RichInt("dilation", 1, "Gutter rings",
+                    "Rings of texels filled around the charts, as the base colour's (half the atlas' gutter)."));
+        parameters.addParam(RichBool("blocks", true, "Atlas on 2 x 2 blocks",
+                                     "The atlas was packed on 2 x 2 blocks (tight packing, the default): after the "
+                                     "rings every block a chart touches is filled, as the base colour's, so mip level "
+                                     "1 keeps the charts apart. Off for the paper's packing."));
         break;
     case FP_MATERIAL_MAPS:
         parameters.addParam(
@@ -213,8 +217,12 @@ void FilterVoxelfairPlugin::initParameterSet(QAction *action, MeshModel &m, Rich
         parameters.addParam(RichString("transmissionFile", defaultMaterialMapName(m, "_transmission.png"),
                                        "Transmission map file", "The PNG to write when some voxel is glass."));
         parameters.addParam(
-            RichInt("dilation", 2, "Gutter rings",
-                    "Rings of texels filled around the charts, as the base colour's (half its gutter)."));
+            RichInt("dilation", 1, "Gutter rings",
+                    "Rings of texels filled around the charts, as the base colour's (half the atlas' gutter)."));
+        parameters.addParam(RichBool("blocks", true, "Atlas on 2 x 2 blocks",
+                                     "The atlas was packed on 2 x 2 blocks (tight packing, the default): after the "
+                                     "rings every block a chart touches is filled, as the base colour's, so mip level "
+                                     "1 keeps the charts apart. Off for the paper's packing."));
         break;
     }
 }
@@ -250,7 +258,12 @@ void FilterVoxelfairPlugin::initParameterSet(QAction *action, MeshDocument &md, 
                                  "quarter of the texels, memory and baking time, for smooth surfaces that need no "
                                  "pixel-art resolution."));
     parameters.addParam(
-        RichInt("dilation", 2, "Gutter rings", "Rings of the normal map's texels filled around the charts."));
+        RichInt("dilation", 1, "Gutter rings",
+                "Rings of the normal map's texels filled around the charts (half the atlas' gutter at full size)."));
+    parameters.addParam(RichBool("blocks", true, "Atlas on 2 x 2 blocks",
+                                 "The atlas was packed on 2 x 2 blocks (tight packing, the default): at full size, "
+                                 "after the rings every block a chart touches is filled, as the base colour's, so mip "
+                                 "level 1 keeps the charts apart. Off for the paper's packing."));
 }
 
 void FilterVoxelfairPlugin::report(const QString &message) {

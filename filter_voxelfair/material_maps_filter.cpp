@@ -97,7 +97,7 @@ bool FilterVoxelfairPlugin::applyHouseMask(MeshModel &m, const RichParameterList
     if (cb)
         cb(10, "Baking the house colour mask");
     const HouseMask mask = bakeHouseMask(arrays.view(), arrays.paletteIndex.data(), size.width(), size.height(),
-                                         parameters.getInt("dilation"));
+                                         parameters.getInt("dilation"), parameters.getBool("blocks"));
     if (cb)
         cb(80, "Writing the house colour mask");
     const QImage image(mask.grey.data(), mask.width, mask.height, mask.width, QImage::Format_Grayscale8);
@@ -149,7 +149,7 @@ bool FilterVoxelfairPlugin::applyMaterialMaps(MeshModel &m, const RichParameterL
         cb(10, "Baking the material maps");
     const MaterialMaps maps =
         bakeMaterialMaps(arrays.view(), arrays.paletteIndex.data(), arrays.triangles.faceColours.data(), *materials,
-                         size.width(), size.height(), parameters.getInt("dilation"));
+                         size.width(), size.height(), parameters.getInt("dilation"), parameters.getBool("blocks"));
     if (cb)
         cb(80, "Writing the material maps");
     // Stale maps of an earlier bake would be taken for this one's.

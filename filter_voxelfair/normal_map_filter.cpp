@@ -102,6 +102,7 @@ bool FilterVoxelfairPlugin::applyNormalMap(MeshDocument &md, const RichParameter
     options.height = height;
     options.level = parameters.getEnum("level");
     options.dilation = parameters.getInt("dilation");
+    options.blocks = parameters.getBool("blocks");
     if (cb)
         cb(10, "Baking the normal map");
     NormalMap map;

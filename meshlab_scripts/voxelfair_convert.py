@@ -208,6 +208,7 @@ def pipeline_script(args, texture, normal, house=None, materials=None):
         "COLOURS": "1" if args.colours == "smoothed" else "0",
         "TEXTURE_FILE": str(texture), "DECIMATION": repr(args.decimate), "NORMAL_FILE": str(normal),
         "HOUSE_FILE": str(house or ""), "NORMAL_LEVEL": "1" if args.normal_map_resolution == "half" else "0",
+        "BLOCKS": "false" if args.packing == "paper" else "true",
     }
     for key, path in zip(("METAL_ROUGH_FILE", "EMISSIVE_FILE", "TRANSMISSION_FILE"), materials or ("", "", "")):
         values[key] = str(path)

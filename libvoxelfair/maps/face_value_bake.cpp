@@ -11,7 +11,7 @@
 namespace voxelfair {
 
 FaceValueImage bakeFaceValues(const FaceValueMesh &mesh, const glm::u8vec3 *faceValues, int width, int height,
-                              int dilation, glm::u8vec3 background) {
+                              int dilation, glm::u8vec3 background, bool blocks) {
     if (width < 1 || height < 1 || width > 16384 || height > 16384)
         throw OptionError("face value bake: the image size " + std::to_string(width) + " x " + std::to_string(height) +
                           " is outside 1..16384");
@@ -42,6 +42,7 @@ FaceValueImage bakeFaceValues(const FaceValueMesh &mesh, const glm::u8vec3 *face
     layout.size = layout.width = width;
     layout.height = height;
     layout.gutter = 2 * dilation;
+    layout.block = blocks ? 2 : 1;
     layout.wedgeUv.assign(mesh.wedgeUv, mesh.wedgeUv + 3 * mesh.faceCount);
     BakeOptions options;
     options.source = BakeSource::FaceColours;

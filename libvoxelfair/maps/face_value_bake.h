@@ -4,7 +4,9 @@
 // A value is an RGB triple per face, painted by the atlas' own crisp bake (atlas/bake.h, face
 // colours): the texels whose centre a face holds, then the texels it merely overlaps, the faces
 // too thin for the centre rule over their interior points, then `dilation` gutter rings with the
-// mean of their painted neighbours. So every texel of every map belongs to the face whose voxel
+// mean of their painted neighbours, and with `blocks` (an atlas packed on 2 x 2 blocks, the
+// atlas' default) the rest of every block a chart or its rings touch with the block's mean, as
+// the base colour does, so mip level 1 keeps the charts apart too. So every texel of every map belongs to the face whose voxel
 // colours it in the base colour texture, and a map lines up with the base colour texel for texel.
 //
 // Throws MeshError for inconsistent arrays (null arrays, indices out of range) and OptionError for
@@ -43,6 +45,6 @@ struct FaceValueImage {
 
 // `faceValues` holds one triple per face; texels outside every chart and ring stay `background`.
 FaceValueImage bakeFaceValues(const FaceValueMesh &mesh, const glm::u8vec3 *faceValues, int width, int height,
-                              int dilation, glm::u8vec3 background = {0, 0, 0});
+                              int dilation, glm::u8vec3 background = {0, 0, 0}, bool blocks = false);
 
 }  // namespace voxelfair

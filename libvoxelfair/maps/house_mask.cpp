@@ -4,8 +4,8 @@
 
 namespace voxelfair {
 
-HouseMask bakeHouseMask(const FaceValueMesh &mesh, const uint8_t *facePaletteIndex, int width, int height,
-                        int dilation) {
+HouseMask bakeHouseMask(const FaceValueMesh &mesh, const uint8_t *facePaletteIndex, int width, int height, int dilation,
+                        bool blocks) {
     if (mesh.faceCount > 0 && facePaletteIndex == nullptr)
         throw MeshError("house mask: every face needs its palette index");
     HouseMask out;
@@ -16,7 +16,7 @@ HouseMask bakeHouseMask(const FaceValueMesh &mesh, const uint8_t *facePaletteInd
         values[f] = glm::u8vec3(house ? 255 : 0);
     }
     // The image with its gutter rings; the chart texels counted on a bake without them.
-    const FaceValueImage image = bakeFaceValues(mesh, values.data(), width, height, dilation);
+    const FaceValueImage image = bakeFaceValues(mesh, values.data(), width, height, dilation, {0, 0, 0}, blocks);
     out.width = image.width;
     out.height = image.height;
     out.grey.resize(size_t(width) * size_t(height));

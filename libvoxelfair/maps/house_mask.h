@@ -32,8 +32,9 @@ struct HouseMask {
     uint8_t texel(int x, int y) const { return grey[size_t(height - 1 - y) * size_t(width) + size_t(x)]; }
 };
 
-// `facePaletteIndex` holds each face's voxel palette index. Throws as bakeFaceValues does.
-HouseMask bakeHouseMask(const FaceValueMesh &mesh, const uint8_t *facePaletteIndex, int width, int height,
-                        int dilation);
+// `facePaletteIndex` holds each face's voxel palette index; the gutter (`dilation`, `blocks`) as
+// bakeFaceValues'. Throws as bakeFaceValues does.
+HouseMask bakeHouseMask(const FaceValueMesh &mesh, const uint8_t *facePaletteIndex, int width, int height, int dilation,
+                        bool blocks = false);
 
 }  // namespace voxelfair

@@ -47,7 +47,7 @@ std::vector<uint8_t> channels(const FaceValueImage &image, int count) {
 
 MaterialMaps bakeMaterialMaps(const FaceValueMesh &mesh, const uint8_t *facePaletteIndex,
                               const glm::u8vec3 *faceColours, const VoxMaterialTable &materials, int width, int height,
-                              int dilation, const PbrDefaults &defaults) {
+                              int dilation, bool blocks, const PbrDefaults &defaults) {
     if (mesh.faceCount > 0 && (facePaletteIndex == nullptr || faceColours == nullptr))
         throw MeshError("material maps: every face needs its palette index and colour");
     MaterialMaps out;
@@ -80,7 +80,7 @@ MaterialMaps bakeMaterialMaps(const FaceValueMesh &mesh, const uint8_t *facePale
         }
         out.metallicRoughness =
             channels(bakeFaceValues(mesh, values.data(), width, height, dilation,
-                                    glm::u8vec3(255, unorm(defaults.roughness), unorm(defaults.metallic))),
+                                    glm::u8vec3(255, unorm(defaults.roughness), unorm(defaults.metallic)), blocks),
                      3);
     }
     if (out.emissiveFaces > 0) {
@@ -91,12 +91,12 @@ MaterialMaps bakeMaterialMaps(const FaceValueMesh &mesh, const uint8_t *facePale
                 c[i] = unorm(srgbFromLinear(linearFromSrgb(float(faceColours[f][i]) / 255.0f) * k));
             values[f] = c;
         }
-        out.emissive = channels(bakeFaceValues(mesh, values.data(), width, height, dilation), 3);
+        out.emissive = channels(bakeFaceValues(mesh, values.data(), width, height, dilation, {0, 0, 0}, blocks), 3);
     }
     if (out.transmissiveFaces > 0) {
         for (size_t f = 0; f < mesh.faceCount; ++f)
             values[f] = glm::u8vec3(unorm(pbr[facePaletteIndex[f]].transmission));
-        out.transmission = channels(bakeFaceValues(mesh, values.data(), width, height, dilation), 1);
+        out.transmission = channels(bakeFaceValues(mesh, values.data(), width, height, dilation, {0, 0, 0}, blocks), 1);
     }
     return out;
 }

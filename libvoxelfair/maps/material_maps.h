@@ -61,10 +61,10 @@ struct MaterialMaps {
     bool empty() const { return metallicRoughness.empty() && emissive.empty() && transmission.empty(); }
 };
 
-// `facePaletteIndex` and `faceColours` (the voxel's sRGB colour) hold one entry per face. Throws
-// as bakeFaceValues does.
+// `facePaletteIndex` and `faceColours` (the voxel's sRGB colour) hold one entry per face; the
+// gutter (`dilation`, `blocks`) as bakeFaceValues'. Throws as bakeFaceValues does.
 MaterialMaps bakeMaterialMaps(const FaceValueMesh &mesh, const uint8_t *facePaletteIndex,
                               const glm::u8vec3 *faceColours, const VoxMaterialTable &materials, int width, int height,
-                              int dilation, const PbrDefaults &defaults = {});
+                              int dilation, bool blocks = false, const PbrDefaults &defaults = {});
 
 }  // namespace voxelfair

@@ -503,6 +503,45 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
                      p[0] = encodeFast(c.x), p[1] = encodeFast(c.y), p[2] = encodeFast(c.z);
                      return true;
                  });
+    // Blocks: every aligned 2 x 2 block with a painted texel belongs to one chart (the atlas'
+    // packing); its other texels take the renormalised mean of its painted ones. Bands of an
+    // even number of rows hold whole blocks.
+    if (options.blocks && options.level == 0)
+        runBands(bandCount, options.threads, [&](size_t band) {
+            const int r0 = int(band) * kBandRows, r1 = std::min(height, r0 + kBandRows);
+            static_assert(kBandRows % 2 == 0, "bands hold whole blocks");
+            for (int y = r0; y < r1; y += 2)
+                for (int x = 0; x < width; x += 2) {
+                    int sum[3] = {0, 0, 0}, n = 0, texelCount = 0;
+                    size_t at[4];
+                    for (int dy = 0; dy < std::min(2, height - y); ++dy)
+                        for (int dx = 0; dx < std::min(2, width - x); ++dx) {
+                            const size_t t = size_t(y + dy) * size_t(width) + size_t(x + dx);
+                            at[texelCount++] = t;
+                            if (state[t] & kTexelPainted) {
+                                const uint8_t *p =
+                                    &image[(size_t(height - 1 - y - dy) * size_t(width) + size_t(x + dx)) * 4];
+                                for (int c = 0; c < 3; ++c)
+                                    sum[c] += 2 * p[c] - 255;
+                                ++n;
+                            }
+                        }
+                    if (n == 0 || n == texelCount)
+                        continue;
+                    const glm::vec3 mean{float(sum[0]), float(sum[1]), float(sum[2])};
+                    const float length = glm::length(mean);
+                    if (!(length > 0.0f))
+                        continue;
+                    const glm::vec3 c = mean / length;
+                    for (int k = 0; k < texelCount; ++k)
+                        if (!(state[at[k]] & kTexelPainted)) {
+                            const size_t x1 = at[k] % size_t(width), y1 = at[k] / size_t(width);
+                            uint8_t *p = &image[(size_t(height - 1) - y1) * size_t(width) * 4 + x1 * 4];
+                            p[0] = encodeFast(c.x), p[1] = encodeFast(c.y), p[2] = encodeFast(c.z);
+                            state[at[k]] |= kTexelPainted;
+                        }
+                }
+        });
     return out;
 }
 

@@ -19,7 +19,8 @@
 //
 // Coverage follows the base colour bake (atlas/bake.h): texel centres inside a target triangle
 // first, then texels a triangle merely overlaps; then `dilation` rings of texels around the
-// charts take the renormalised mean of their painted neighbours (the gutter). Texels no target
+// charts take the renormalised mean of their painted neighbours, and on a layout of 2 x 2 blocks
+// the blocks are filled (the gutter, NormalBakeOptions). Texels no target
 // triangle touches keep the flat normal (0, 0, 1).
 //
 // The texture is split into bands of texel rows baked on `threads` threads (parallel_bands.h);
@@ -69,8 +70,14 @@ struct NormalBakeOptions {
     // atlas' mip 1 of the full-size map's layout, a quarter of its texels and memory. Smooth
     // faired surfaces lose little at level 1 (README: the per-model angle table has both).
     int level = 0;
-    int dilation = 2;  // gutter rings of the map's own texels
-    int threads = 0;   // 0: one per hardware thread
+    // The gutter, as the base colour's (atlas/bake.h): `dilation` rings of the map's own texels,
+    // then, with `blocks` (an atlas packed on 2 x 2 blocks, PackOptions::mipBlocks, the default)
+    // at level 0, the rest of every aligned 2 x 2 block a chart or its rings touch takes the
+    // renormalised mean of the block's painted texels, so a box-filtered mip 1 never mixes
+    // charts. The defaults are the base colour's for the atlas' default gutter of 2.
+    int dilation = 1;
+    bool blocks = true;
+    int threads = 0;  // 0: one per hardware thread
 };
 
 struct NormalMap {

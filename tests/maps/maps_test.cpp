@@ -1,6 +1,7 @@
 // libvoxelfair/maps on generated families (fixed seeds): planes at random orientations with
 // random affine (possibly mirrored) UV maps, where the MikkTSpace tangent is known in closed form,
 // and normal fields baked from a fine grid onto a coarse one and read back as a shader does.
+#include "maps/face_value_bake.h"
 #include "maps/mikktspace.h"
 #include "maps/normal_bake.h"
 
@@ -267,5 +268,56 @@ TEST(NormalBake, TheMapIsTheSameOnAnyNumberOfThreads) {
             EXPECT_GT(many.texelsBaked, size_t(many.width) * size_t(many.height) / 20);
             EXPECT_TRUE(many.rgba == one.rgba) << threads << " threads";
         }
+    }
+}
+
+// Aligned 2 x 2 blocks of a width x height image (rows top down, RGBA) that mix texels `filled`
+// says are painted with texels it says are not.
+template <class Filled>
+int mixedBlocks(const std::vector<uint8_t> &rgba, int width, int height, Filled &&filled) {
+    int mixed = 0;
+    for (int y = 0; y + 1 < height; y += 2)
+        for (int x = 0; x + 1 < width; x += 2) {
+            int n = 0;
+            for (int k = 0; k < 4; ++k)
+                n += filled(&rgba[(size_t(y + k / 2) * size_t(width) + size_t(x + k % 2)) * 4]) ? 1 : 0;
+            mixed += n > 0 && n < 4 ? 1 : 0;
+        }
+    return mixed;
+}
+
+TEST(NormalBake, OnABlockAtlasEveryBlockAChartTouchesIsFilledAsTheBaseColoursIs) {
+    std::mt19937 rng(2222);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    for (int trial = 0; trial < 6; ++trial) {
+        SCOPED_TRACE(trial);
+        const glm::mat3 R = randomRotation(rng);
+        const glm::mat2 A = randomUvMap(rng, trial % 2 == 1);
+        const glm::vec2 c(0.5f, 0.5f);
+        const PlaneGrid fine = planeGrid(17, R, glm::vec3(1.0f), A, c - A * glm::vec2(0.5f));
+        PlaneGrid coarse = planeGrid(3, R, glm::vec3(1.0f), A, c - A * glm::vec2(0.5f));
+        for (glm::vec3 &n : coarse.normals)  // tilted: no baked texel is the flat background
+            n = glm::normalize(n + 0.3f * R * glm::vec3(0.5f + 0.5f * std::abs(u(rng)), 0.5f, 0.0f));
+        NormalBakeOptions options;
+        options.width = 97 + trial;  // odd sides too: a last half block
+        options.height = 64;
+        auto painted = [](const uint8_t *p) { return !(p[0] == 128 && p[1] == 128 && p[2] == 255); };
+        // Flipped rows keep blocks aligned only on even heights; the height is even.
+        const NormalMap filled = bakeNormalMap(view(fine), view(coarse), options);
+        EXPECT_EQ(mixedBlocks(filled.rgba, filled.width, filled.height, painted), 0);
+        options.blocks = false;
+        const NormalMap rings = bakeNormalMap(view(fine), view(coarse), options);
+        EXPECT_GT(mixedBlocks(rings.rgba, rings.width, rings.height, painted), 0);  // the test can tell
+
+        // The per-face value maps (house mask, material maps) too: alpha 255 on charts and gutter.
+        FaceValueMesh mesh;
+        static_cast<TriangleMesh &>(mesh) = triangleMesh(fine.positions, fine.triangles);
+        mesh.wedgeUv = fine.wedgeUv.data();
+        const std::vector<glm::u8vec3> values(fine.triangles.size() / 3, glm::u8vec3(200, 100, 50));
+        auto opaque = [](const uint8_t *p) { return p[3] == 255; };
+        const FaceValueImage blocks = bakeFaceValues(mesh, values.data(), options.width, 64, 1, {0, 0, 0}, true);
+        EXPECT_EQ(mixedBlocks(blocks.rgba, blocks.width, blocks.height, opaque), 0);
+        const FaceValueImage plain = bakeFaceValues(mesh, values.data(), options.width, 64, 1, {0, 0, 0}, false);
+        EXPECT_GT(mixedBlocks(plain.rgba, plain.width, plain.height, opaque), 0);
     }
 }
