@@ -4,6 +4,7 @@
 #include "atlas/seed_plane.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <numeric>
 #include <vector>
@@ -43,6 +44,29 @@ struct Box {
         }
     }
     bool meets(const Box &o) const { return lo.x < o.hi.x && o.lo.x < hi.x && lo.y < o.hi.y && o.lo.y < hi.y; }
+};
+
+// A large chart's faces bucketed on a uniform grid over its UV box (about two faces per cell),
+// so a merge looks only at the faces near the small chart. Boxes outside the grid are clamped
+// to its border cells on both sides (insert and query), which keeps every meeting pair found.
+constexpr uint32_t kGridFaces = 64;  // charts this large get a grid; smaller ones are scanned
+struct FaceGrid {
+    glm::vec2 lo{0.0f};
+    float perCell = 1;
+    int nx = 1, ny = 1;
+    std::vector<std::vector<uint32_t>> cells;
+    void cellRange(const Box &b, int &x0, int &y0, int &x1, int &y1) const {
+        auto cell = [&](float v, float o, int n) { return std::clamp(int((v - o) * perCell), 0, n - 1); };
+        x0 = cell(b.lo.x, lo.x, nx), x1 = cell(b.hi.x, lo.x, nx);
+        y0 = cell(b.lo.y, lo.y, ny), y1 = cell(b.hi.y, lo.y, ny);
+    }
+    void insert(uint32_t f, const Box &b) {
+        int x0, y0, x1, y1;
+        cellRange(b, x0, y0, x1, y1);
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x)
+                cells[size_t(y) * nx + x].push_back(f);
+    }
 };
 
 }  // namespace
@@ -85,6 +109,31 @@ size_t mergeSmallCharts(const AtlasMesh &mesh, const uint32_t *opposite, const C
         uint32_t chart;
         float cosine;
     };
+    std::vector<FaceGrid> grids(chartCount);  // built when a large chart is first a candidate
+    auto faceBox = [&](uint32_t f) {
+        Box b;
+        b.add(&uv[3 * size_t(f)]);
+        return b;
+    };
+    auto gridOf = [&](uint32_t a) -> FaceGrid & {
+        FaceGrid &g = grids[a];
+        if (!g.cells.empty())
+            return g;
+        Box all;
+        for (uint32_t f = head[a]; f != kNone; f = next[f])
+            all.add(&uv[3 * size_t(f)]);
+        const glm::vec2 extent = glm::max(all.hi - all.lo, glm::vec2(1e-20f));
+        const double cell = std::sqrt(double(extent.x) * extent.y * 2.0 / count[a]);
+        g.lo = all.lo;
+        g.nx = std::clamp(int(extent.x / cell) + 1, 1, 1024);
+        g.ny = std::clamp(int(extent.y / cell) + 1, 1, 1024);
+        g.perCell = float(std::min(g.nx / double(extent.x), g.ny / double(extent.y)));
+        g.cells.resize(size_t(g.nx) * g.ny);
+        for (uint32_t f = head[a]; f != kNone; f = next[f])
+            g.insert(f, faceBox(f));
+        return g;
+    };
+    std::vector<uint32_t> near;
     std::vector<Candidate> candidates;
     std::vector<uint32_t> faces;
     std::vector<glm::vec2> moved;
@@ -136,10 +185,24 @@ size_t mergeSmallCharts(const AtlasMesh &mesh, const uint32_t *opposite, const C
                 for (size_t j = 0; j < i && fits; ++j)
                     fits = !overlap(t, &moved[3 * j]);
             }
-            for (uint32_t f = head[a]; f != kNone && fits; f = next[f]) {
-                Box fb;
-                fb.add(&uv[3 * size_t(f)]);
-                if (!fb.meets(box))
+            // a's faces whose boxes meet b's: from the grid, or all of a's when small.
+            near.clear();
+            if (count[a] >= kGridFaces) {
+                const FaceGrid &g = gridOf(a);
+                int x0, y0, x1, y1;
+                g.cellRange(box, x0, y0, x1, y1);
+                for (int y = y0; y <= y1; ++y)
+                    for (int x = x0; x <= x1; ++x) {
+                        const std::vector<uint32_t> &cell = g.cells[size_t(y) * g.nx + x];
+                        near.insert(near.end(), cell.begin(), cell.end());
+                    }
+            } else {
+                for (uint32_t f = head[a]; f != kNone; f = next[f])
+                    near.push_back(f);
+            }
+            for (size_t n = 0; n < near.size() && fits; ++n) {
+                const uint32_t f = near[n];
+                if (!faceBox(f).meets(box))
                     continue;
                 for (size_t i = 0; i < faces.size() && fits; ++i)
                     fits = !overlap(&uv[3 * size_t(f)], &moved[3 * i]);
@@ -149,6 +212,8 @@ size_t mergeSmallCharts(const AtlasMesh &mesh, const uint32_t *opposite, const C
             for (size_t i = 0; i < faces.size(); ++i) {
                 std::copy_n(&moved[3 * i], 3, &uv[3 * size_t(faces[i])]);
                 chartOf[faces[i]] = a;
+                if (!grids[a].cells.empty())
+                    grids[a].insert(faces[i], faceBox(faces[i]));
             }
             next[tail[a]] = head[b];
             tail[a] = tail[b];
