@@ -25,6 +25,8 @@
 // 3b. Where the filtered normals of a vertex's polygons turn by more than featureSpread (edges
 //    and rims hidden in the staircase), the vertex is moved towards those polygons' planes (Sun et
 //    al.'s own vertex update), which puts it on their line or corner (constrained/feature_fit.cpp).
+//    The planes take the normal of the nearest flat side a few quads away, not the filtered one,
+//    which turns over several quads there: the edge comes out sharper.
 // 4. Every vertex stays inside the cell around its input position (half-width cellHalfWidth
 //    voxels per axis): on the voxel surface the true surface crosses the cube spanned by the 8
 //    voxel centres around each lattice vertex (Gibson, "Constrained elastic surface nets",
@@ -77,6 +79,10 @@ struct ConstrainedFairingOptions {
     // planes (0 turns it off).
     int featureFitIterations = 10;
     float featureSpreadDegrees = 10.0f;
+    // Step 3b's planes take the normals of flat sides within this angle (see
+    // constrained/feature_fit.cpp), which sharpens edges the staircase hides; 0 keeps the
+    // filtered normals.
+    float featureFlatDegrees = 10.0f;
     // Find flat faces at any orientation and hold their vertices on fitted planes, edges and
     // corners (constrained/plane_regions.cpp). Off: slow on large curved surfaces (see above).
     bool fitPlanes = false;

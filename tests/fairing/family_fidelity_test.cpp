@@ -49,13 +49,13 @@ double rmsBound(const shapes::Family &family) {
     // Measured worst of the first kInstances, plus about 10%; the goal is 0.10.
     static const std::map<std::string, double> measured = {
         {"rounded box", 0.10},  // goal met
-        {"barrel on hull", 0.115},
+        {"barrel on hull", 0.105},
         {"rounded box on the lattice", 0.15},
-        {"box turned about one axis", 0.15},
-        {"box turned about two axes", 0.18},
-        {"plate", 0.16},
-        {"wedge", 0.155},
-        {"chamfered plate", 0.155},
+        {"box turned about one axis", 0.145},
+        {"box turned about two axes", 0.165},
+        {"plate", 0.14},
+        {"wedge", 0.14},
+        {"chamfered plate", 0.145},
     };
     const auto it = measured.find(family.name);
     return it != measured.end() ? it->second : 0.10;
@@ -63,7 +63,7 @@ double rmsBound(const shapes::Family &family) {
 
 // Families whose mean RMS is not below the paper's pass / VTK's (issue 15's goal not met there).
 const std::vector<std::string> kBehindPaper = {"rounded box on the lattice"};
-const std::vector<std::string> kBehindVtk = {"rounded box on the lattice", "chamfered plate"};
+const std::vector<std::string> kBehindVtk = {"rounded box on the lattice"};
 bool listed(const std::vector<std::string> &list, const std::string &name) {
     return std::find(list.begin(), list.end(), name) != list.end();
 }
