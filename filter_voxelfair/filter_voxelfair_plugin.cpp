@@ -4,6 +4,22 @@
 #include <exception>
 #include <new>
 
+namespace {
+
+// The gutter of a map baked into the atlas' layout (house mask, material maps, normal map):
+// `when` qualifies the block rule ("at full size, " for the normal map, which may be halved).
+void addMapGutterParameters(RichParameterList &parameters, const QString &when) {
+    parameters.addParam(RichInt("dilation", 1, "Gutter rings",
+                                "Rings of the map's texels filled around the charts, as the base colour's (half the "
+                                "atlas' gutter at full size)."));
+    parameters.addParam(RichBool("blocks", true, "Atlas on 2 x 2 blocks",
+                                 "The atlas was packed on 2 x 2 blocks (tight packing, the default): " + when +
+                                     "after the rings every block a chart touches is filled, as the base colour's, so "
+                                     "mip level 1 keeps the charts apart. Off for the paper's packing."));
+}
+
+}  // namespace
+
 FilterVoxelfairPlugin::FilterVoxelfairPlugin() {
     typeList << FP_LANCZOS_FAIRING << FP_ATTRIBUTE_SMOOTHING << FP_TEXTURE_ATLAS << FP_NORMAL_MAP << FP_HOUSE_MASK
              << FP_MATERIAL_MAPS;
@@ -198,13 +214,7 @@ void FilterVoxelfairPlugin::initParameterSet(QAction *action, MeshModel &m, Rich
         parameters.addParam(RichString("houseFile", defaultHouseMaskName(m), "House colour mask file",
                                        "The PNG to write (greyscale, the base colour's size): a relative name is put "
                                        "beside the mesh's file."));
-        parameters.addParam(
-            RichInt("dilation", 1, "Gutter rings",
-                    "Rings of texels filled around the charts, as the base colour's (half the atlas' gutter)."));
-        parameters.addParam(RichBool("blocks", true, "Atlas on 2 x 2 blocks",
-                                     "The atlas was packed on 2 x 2 blocks (tight packing, the default): after the "
-                                     "rings every block a chart touches is filled, as the base colour's, so mip level "
-                                     "1 keeps the charts apart. Off for the paper's packing."));
+        addMapGutterParameters(parameters, "");
         break;
     case FP_MATERIAL_MAPS:
         parameters.addParam(
@@ -216,13 +226,7 @@ void FilterVoxelfairPlugin::initParameterSet(QAction *action, MeshModel &m, Rich
                                        "The PNG to write when some voxel emits light."));
         parameters.addParam(RichString("transmissionFile", defaultMaterialMapName(m, "_transmission.png"),
                                        "Transmission map file", "The PNG to write when some voxel is glass."));
-        parameters.addParam(
-            RichInt("dilation", 1, "Gutter rings",
-                    "Rings of texels filled around the charts, as the base colour's (half the atlas' gutter)."));
-        parameters.addParam(RichBool("blocks", true, "Atlas on 2 x 2 blocks",
-                                     "The atlas was packed on 2 x 2 blocks (tight packing, the default): after the "
-                                     "rings every block a chart touches is filled, as the base colour's, so mip level "
-                                     "1 keeps the charts apart. Off for the paper's packing."));
+        addMapGutterParameters(parameters, "");
         break;
     }
 }
@@ -257,13 +261,7 @@ void FilterVoxelfairPlugin::initParameterSet(QAction *action, MeshDocument &md, 
                                  "2 x 2 texel block of the atlas (its mip 1; the charts are packed on such blocks): a "
                                  "quarter of the texels, memory and baking time, for smooth surfaces that need no "
                                  "pixel-art resolution."));
-    parameters.addParam(
-        RichInt("dilation", 1, "Gutter rings",
-                "Rings of the normal map's texels filled around the charts (half the atlas' gutter at full size)."));
-    parameters.addParam(RichBool("blocks", true, "Atlas on 2 x 2 blocks",
-                                 "The atlas was packed on 2 x 2 blocks (tight packing, the default): at full size, "
-                                 "after the rings every block a chart touches is filled, as the base colour's, so mip "
-                                 "level 1 keeps the charts apart. Off for the paper's packing."));
+    addMapGutterParameters(parameters, "at full size, ");
 }
 
 void FilterVoxelfairPlugin::report(const QString &message) {
