@@ -102,10 +102,15 @@ ColourFidelity measureColourFidelity(const AtlasMesh &mesh, const AtlasLayout &l
     if (!mesh.faceColours || texture.width <= 0 || texture.height <= 0 || layout.wedgeUv.size() != 3 * mesh.faceCount)
         return r;
     const int size = texture.width, height = texture.height;
-    auto nearest = [&](glm::dvec2 p) {
-        const int x = std::clamp(int(std::floor(p.x)), 0, size - 1),
-                  y = std::clamp(int(std::floor(p.y)), 0, height - 1);
-        return glm::u8vec3(texture.texel(x, y));
+    // Nearest: every texel within kUvRounding of p holds the colour, so the sample reads it
+    // from the UVs as written to a file too.
+    auto nearestIs = [&](glm::dvec2 p, glm::u8vec3 want) {
+        auto texel = [](double v, int n) { return std::clamp(int(std::floor(v)), 0, n - 1); };
+        for (int y = texel(p.y - kUvRounding, height); y <= texel(p.y + kUvRounding, height); ++y)
+            for (int x = texel(p.x - kUvRounding, size); x <= texel(p.x + kUvRounding, size); ++x)
+                if (glm::u8vec3(texture.texel(x, y)) != want)
+                    return false;
+        return true;
     };
     auto bilinear = [&](glm::dvec2 p) {
         const glm::dvec2 t = p - 0.5, base = glm::floor(t), w = t - base;
@@ -131,7 +136,7 @@ ColourFidelity measureColourFidelity(const AtlasMesh &mesh, const AtlasLayout &l
         const bool sureNearest = inradius >= std::sqrt(2.0), sureBilinear = inradius >= 2 * std::sqrt(2.0);
         const glm::u8vec3 want = mesh.faceColours[f];
         for (const glm::dvec2 &p : samples) {
-            const bool n = nearest(p) == want, l = bilinear(p) == want;
+            const bool n = nearestIs(p, want), l = bilinear(p) == want;
             ++r.samples;
             r.nearestMatches += n;
             r.bilinearMatches += l;

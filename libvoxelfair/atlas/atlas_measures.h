@@ -47,7 +47,8 @@ AtlasMeasures measureAtlas(const AtlasMesh &mesh, const AtlasCharts &charts, con
 // Colour fidelity of a crisp (FaceColours) texture: each face is sampled at four interior
 // points of its UV triangle, the incentre and the points halfway from it to each corner, and a
 // sample counts when the texture returns exactly the face's colour.
-//   * nearest: the texel containing the point (GL_NEAREST);
+//   * nearest: the texel containing the point (GL_NEAREST), and every texel within kUvRounding
+//     of it (texel_raster.h), where the UVs rounded in a text file may move it;
 //   * bilinear: the four texel centres around it, weighted (GL_LINEAR, clamp to edge).
 // Guarantee from the bake: a sample at distance r from the triangle's edges reads only texels
 // whose centre is inside the face when r >= sqrt(2)/2 (nearest) or r >= sqrt(2) (bilinear).

@@ -208,7 +208,7 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
         load(f);
         if (crisp) {
             const double inradius = faceInteriorPoints(q, points);
-            if (inradius > 0 && inradius < std::sqrt(2.0))
+            if (inradius > 0 && inradius < std::sqrt(2.0) + 2 * kUvRounding)
                 thin.push_back(uint32_t(f));
         }
         const glm::u8vec3 faceColour = uniform ? colourAt(f, q, 0, 0) : glm::u8vec3(0);
@@ -231,17 +231,24 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
     }
     // Faces too thin for the centre rule to guarantee their interior (UV inradius under sqrt(2)
     // texels: a texel holding one of their interior points may have its centre in a neighbour)
-    // paint the texels under their interior points with their own colour. Faces at least that
-    // thick are untouched: their interior points lie over their own centre texels. Where two
-    // thin faces of different colours would share such a texel, the atlas gave one of them a
-    // chart of its own beforehand (crowded_faces.h), so the order does not matter.
+    // paint the texels under their interior points with their own colour, and the texels
+    // within kUvRounding of them (a point within that of a texel border paints both sides: the
+    // UVs written to a text file may put it on either). Faces thicker than sqrt(2) + 2
+    // kUvRounding are untouched: the texels within kUvRounding of their interior points have
+    // their centres inside the face. Where two thin faces of different colours would share such
+    // a texel, the atlas gave one of them a chart of its own beforehand (crowded_faces.h: points
+    // closer than sqrt(2) + 0.01 texels), so the order does not matter.
+    auto texelOf = [](double v, int n) { return std::clamp(int(std::floor(v)), 0, n - 1); };
     for (uint32_t f : thin) {
         load(f);
         faceInteriorPoints(q, points);
-        for (const glm::dvec2 &p : points)
-            canvas.paint(canvas.index(std::clamp(int(std::floor(p.x)), 0, width - 1),
-                                      std::clamp(int(std::floor(p.y)), 0, height - 1)),
-                         mesh.faceColours[f]);
+        for (const glm::dvec2 &p : points) {
+            const int x0 = texelOf(p.x - kUvRounding, width), x1 = texelOf(p.x + kUvRounding, width);
+            const int y0 = texelOf(p.y - kUvRounding, height), y1 = texelOf(p.y + kUvRounding, height);
+            for (int y = y0; y <= y1; ++y)
+                for (int x = x0; x <= x1; ++x)
+                    canvas.paint(canvas.index(x, y), mesh.faceColours[f]);
+        }
     }
     out.dilation = options.dilation < 0 ? layout.gutter / 2 : std::min(options.dilation, width);
     dilate(canvas, out.dilation);

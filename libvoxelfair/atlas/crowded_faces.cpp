@@ -16,9 +16,10 @@
 namespace voxelfair {
 namespace {
 
-// sqrt(2) texels, the reach of one texel's diagonal, plus a margin for the float rounding of
-// the final UVs (about 1e-3 texel in a 16384 texture): the bake's own threshold is exactly
-// sqrt(2), so every face it treats as thin is thin here too.
+// sqrt(2) texels, the reach of one texel's diagonal, plus a margin for the rounding of the
+// final UVs (about 1e-3 texel in a 16384 texture as floats; the bake paints every texel within
+// kUvRounding = 1/256 of a thin face's interior points, texel_raster.h): the bake's own
+// threshold is sqrt(2) + 2 kUvRounding, so every face it treats as thin is thin here too.
 constexpr double kReach = 1.41421356237309505 + 0.01;
 
 // Faces thinner than this (texels) may lose their UV area to float rounding once packed, and

@@ -3,7 +3,8 @@
 //
 // Texel (x, y) is the unit square [x, x+1] x [y, y+1] with y growing along v (up). Coordinates
 // are doubles: final UVs are floats in [0, 1] times a texture side, so every stage sees the same
-// numbers up to ~1e-4 texel, far below the margins used here.
+// numbers up to ~1e-4 texel, far below the margins used here; files may round them further
+// (kUvRounding).
 #pragma once
 
 #include <glm/geometric.hpp>
@@ -19,6 +20,13 @@ namespace voxelfair {
 inline double doubleArea(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
     return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
 }
+
+// How far (texels) a final UV may move after the atlas: float UVs move ~1e-4 texel, and text
+// files round them to 6 digits (MeshLab's ASCII PLY writes "%g", OBJ "%f": up to 5e-7 in UV,
+// 0.004 texel in an 8192 texture). The bake keeps a thin face's colour on every texel within
+// this of its interior points, so a sample that rounding moves across a texel border still
+// reads its face (crowded_faces.h separates with a 0.01 texel margin, more than twice this).
+constexpr double kUvRounding = 1.0 / 256;
 
 // Where the colour of a face is judged (atlas_measures.h) and guaranteed (bake.h): the incentre
 // of its UV triangle q (in texels) and the points halfway from it to each corner. Returns the

@@ -1,6 +1,7 @@
 // Crisp colours for every face (crowded_faces.h): on families of voxel meshes faired by the
 // paper's operator (the slivers it squeezes are the hard case), smoothed by Taubin, or jittered
-// into needles, every interior point of every face reads its face's colour, at every density
+// into needles, every interior point of every face reads its face's colour (also from UVs
+// rounded as text files store them: measureColourFidelity), at every density
 // that the texture can resolve, in both packers and with a fixed texture size.
 #include "atlas/atlas_measures.h"
 #include "shapes/atlas_test_meshes.h"
