@@ -1,5 +1,6 @@
 #include "atlas/chart_merge.h"
 
+#include "atlas/chart_overlap.h"
 #include "atlas/edge_adjacency.h"
 #include "atlas/seed_plane.h"
 
@@ -17,16 +18,12 @@ namespace {
 
 constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
 
-double orient(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
-    return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-}
-
 // Whether an edge line of counter-clockwise triangle `t` has all of `u` on its closed outer side.
 bool separates(const glm::vec2 *t, const glm::vec2 *u) {
     for (int k = 0; k < 3; ++k) {
         const glm::dvec2 a(t[k]), b(t[(k + 1) % 3]);
-        if (orient(a, b, glm::dvec2(u[0])) <= 0 && orient(a, b, glm::dvec2(u[1])) <= 0 &&
-            orient(a, b, glm::dvec2(u[2])) <= 0)
+        if (orientUv(a, b, glm::dvec2(u[0])) <= 0 && orientUv(a, b, glm::dvec2(u[1])) <= 0 &&
+            orientUv(a, b, glm::dvec2(u[2])) <= 0)
             return true;
     }
     return false;
@@ -180,7 +177,7 @@ size_t mergeSmallCharts(const AtlasMesh &mesh, const uint32_t *opposite, const C
                     t[c] =
                         projectOnPlane(plane, origin, mesh.positions[mesh.triangles[3 * size_t(faces[i]) + c]], scale) -
                         lo[a];
-                fits = orient(glm::dvec2(t[0]), glm::dvec2(t[1]), glm::dvec2(t[2])) > 0;
+                fits = orientUv(glm::dvec2(t[0]), glm::dvec2(t[1]), glm::dvec2(t[2])) > 0;
                 box.add(t);
                 for (size_t j = 0; j < i && fits; ++j)
                     fits = !overlap(t, &moved[3 * j]);

@@ -8,16 +8,12 @@
 namespace voxelfair {
 namespace {
 
-double orient(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
-    return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-}
-
 bool cross(const ChartBoundaryEdge &e, const ChartBoundaryEdge &f) {
     if (e.va == f.va || e.va == f.vb || e.vb == f.va || e.vb == f.vb)
         return false;
     const glm::dvec2 ea(e.a), eb(e.b), fa(f.a), fb(f.b);
-    const double o1 = orient(ea, eb, fa), o2 = orient(ea, eb, fb);
-    const double o3 = orient(fa, fb, ea), o4 = orient(fa, fb, eb);
+    const double o1 = orientUv(ea, eb, fa), o2 = orientUv(ea, eb, fb);
+    const double o3 = orientUv(fa, fb, ea), o4 = orientUv(fa, fb, eb);
     return ((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0));
 }
 

@@ -15,6 +15,12 @@
 
 namespace voxelfair {
 
+// Twice the signed area of UV triangle (a, b, c): positive when it turns counter-clockwise. The
+// one orientation test of the atlas' overlap checks (here and chart_merge.cpp).
+inline double orientUv(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
+    return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
+
 struct ChartBoundaryEdge {
     glm::vec2 a, b;   // UV ends
     uint32_t va, vb;  // their vertices: edges sharing a vertex never count as crossing
