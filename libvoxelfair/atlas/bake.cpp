@@ -134,6 +134,13 @@ void dilate(Canvas &canvas, int rings) {
 void fillBlocks(Canvas &canvas) {
     for (int y = 0; y < canvas.height; y += 2)
         for (int x = 0; x < canvas.width; x += 2) {
+            if (y + 1 < canvas.height && x + 1 < canvas.width) {  // a whole block, all painted or none: as it is
+                uint16_t low = 0, high = 0;
+                std::memcpy(&low, &canvas.filled[canvas.index(x, y)], 2);
+                std::memcpy(&high, &canvas.filled[canvas.index(x, y + 1)], 2);
+                if ((low | high) == 0 || (low == 0x0101 && high == 0x0101))
+                    continue;
+            }
             size_t at[4];
             int n = 0;
             for (int dy = 0; dy < std::min(2, canvas.height - y); ++dy)
@@ -217,6 +224,36 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
                 if (!canvas.filled[row + size_t(x)])
                     canvas.paint(row + size_t(x), uniform ? faceColour : colourAt(f, q, x + 0.5, y + 0.5));
         };
+        if (uniform) {  // one colour: whole spans at once, through raw pointers
+            const uint8_t texel[4] = {faceColour.r, faceColour.g, faceColour.b, 255};
+            uint8_t *rgba = canvas.rgba.data(), *filled = canvas.filled.data();
+            auto fill = [&](size_t from, size_t to) {  // [from, to)
+                for (size_t i = from; i < to; ++i)
+                    std::memcpy(rgba + 4 * i, texel, 4);
+                if (to > from)
+                    std::memset(filled + from, 1, to - from);
+            };
+            auto fillEmpty = [&](size_t from, size_t to) {
+                for (size_t i = from; i < to; ++i)
+                    if (!filled[i]) {
+                        std::memcpy(rgba + 4 * i, texel, 4);
+                        filled[i] = 1;
+                    }
+            };
+            rasterRows(q[0], q[1], q[2], kBakeMargin, width, height, [&](int y, int cl, int cr, int zl, int zr) {
+                const size_t row = canvas.index(0, y);
+                if (zl > zr) {
+                    fillEmpty(row + size_t(cl), row + size_t(cr) + 1);
+                    return;
+                }
+                fill(row + size_t(zl), row + size_t(zr) + 1);
+                if (cl < zl)
+                    fillEmpty(row + size_t(cl), row + size_t(std::min(cr, zl - 1)) + 1);
+                if (cr > zr)
+                    fillEmpty(row + size_t(std::max(cl, zr + 1)), row + size_t(cr) + 1);
+            });
+            continue;
+        }
         rasterRows(q[0], q[1], q[2], kBakeMargin, width, height, [&](int y, int cl, int cr, int zl, int zr) {
             const size_t row = canvas.index(0, y);
             for (int x = zl; x <= zr; ++x)

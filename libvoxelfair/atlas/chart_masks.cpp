@@ -47,6 +47,18 @@ bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int pa
     // turns into a sliding minimum (maximum) of the extents over 2 * padding + 1 rows (columns).
     std::vector<int> rowLeft, rowRight, colBottom, colTop, grown;
     const int border = padding + 1;  // the footprint may reach one texel below its box
+    if (keepSpans) {  // room for every triangle's rows at once: growing the spans costs more than the rows
+        double rows = 0;
+        for (size_t c = 0; c < charts.chartCount(); ++c) {
+            const double scale = charts.isDegenerate(c) ? 1.0 : texelsPerUnit;
+            for (size_t i = charts.chartFirstFace[c]; i < charts.chartFirstFace[c + 1]; ++i) {
+                const glm::vec2 *uv = &charts.wedgeUv[3 * i];
+                rows += (std::max({uv[0].y, uv[1].y, uv[2].y}) - std::min({uv[0].y, uv[1].y, uv[2].y})) * scale + 3;
+            }
+        }
+        if (rows < 1e9)
+            masks.spans.reserve(3 * size_t(rows));
+    }
     for (size_t c = 0; c < charts.chartCount(); ++c) {
         ChartMask &m = masks.charts[c];
         m.scale = charts.isDegenerate(c) ? 1.0 : texelsPerUnit;
@@ -63,8 +75,11 @@ bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int pa
             rasterConservativeSpans(
                 glm::dvec2(uv[0]) * m.scale + double(border), glm::dvec2(uv[1]) * m.scale + double(border),
                 glm::dvec2(uv[2]) * m.scale + double(border), kMaskMargin, w, h, [&](int y, int xl, int xr) {
-                    if (keepSpans)
-                        masks.spans.insert(masks.spans.end(), {int16_t(y), int16_t(xl), int16_t(xr)});
+                    if (keepSpans) {
+                        masks.spans.push_back(int16_t(y));
+                        masks.spans.push_back(int16_t(xl));
+                        masks.spans.push_back(int16_t(xr));
+                    }
                     rowLeft[size_t(y)] = std::min(rowLeft[size_t(y)], xl);
                     rowRight[size_t(y)] = std::max(rowRight[size_t(y)], xr);
                     int *bottom = colBottom.data(), *top = colTop.data();

@@ -1,6 +1,7 @@
 #include "atlas/pack_tight.h"
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <numeric>
 #include <tuple>
@@ -50,26 +51,37 @@ void turnedShape(const ChartMask &m, const std::vector<int16_t> &profiles, int t
         for (int r = 0; r < s.height; ++r)
             s.spans.push_back({int16_t(r), s.left[size_t(r)], int16_t(s.right[size_t(r)] - s.left[size_t(r)] + 1)});
     } else {
-        // The bitmap read through the turn (the profiles' mapping above, texel by texel).
-        auto at = [&](int r, int c) {
+        // The bitmap read through the turn (the profiles' mapping above, texel by texel): row r
+        // of the turned shape starts at bits[origin(r)] and steps by `stride` per column.
+        ptrdiff_t stride = 1;
+        auto origin = [&](int r) -> ptrdiff_t {
             switch (turns) {
-            case 0: return bits[size_t(r) * w + c];
-            case 1: return bits[size_t(h - 1 - c) * w + r];
-            case 2: return bits[size_t(h - 1 - r) * w + (w - 1 - c)];
-            default: return bits[size_t(c) * w + (w - 1 - r)];
+            case 0: return ptrdiff_t(r) * w;
+            case 1: return ptrdiff_t(h - 1) * w + r;
+            case 2: return ptrdiff_t(h - 1 - r) * w + (w - 1);
+            default: return w - 1 - r;
             }
         };
-        for (int r = 0; r < s.height; ++r)
-            for (int c = s.left[size_t(r)]; c <= s.right[size_t(r)];) {
-                if (!at(r, c)) {
+        switch (turns) {
+        case 0: stride = 1; break;
+        case 1: stride = -w; break;
+        case 2: stride = -1; break;
+        default: stride = w; break;
+        }
+        for (int r = 0; r < s.height; ++r) {
+            const uint8_t *row = bits + origin(r);
+            const int right = s.right[size_t(r)];
+            for (int c = s.left[size_t(r)]; c <= right;) {
+                if (!row[c * stride]) {
                     ++c;
                     continue;
                 }
                 const int start = c;
-                while (c <= s.right[size_t(r)] && at(r, c))
+                while (c <= right && row[c * stride])
                     ++c;
                 s.spans.push_back({int16_t(r), int16_t(start), int16_t(c - start)});
             }
+        }
     }
     // The longest span admits the fewest places, so it is tested first and the others mostly
     // confirm it.

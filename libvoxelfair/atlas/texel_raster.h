@@ -85,38 +85,37 @@ inline int floorToInt(double v) {  // |v| < 2^31
 // >= 0, or the centre test's > 0 with its top-left rule on 0). For an edge with k = -ey != 0 the
 // test changes sign at x = t(y) on row y; t is linear in y, so it is kept as its value on the
 // first row (y0) and its step per row. Edges with k > 0 bound the span from below (ceil t), the
-// others from above (floor t); a triangle has one or two of each (the e.y sum to 0), unused
-// slots hold bounds that never bind. A horizontal edge (k = 0) keeps or drops whole rows.
+// others from above (floor t); a triangle has one or two of each (the e.y sum to 0), and only
+// those 2 or 3 bounds are kept. A horizontal edge (k = 0) keeps or drops whole rows.
 //
 // Rounding: a texel whose centre lies further than `tolerance` (texels) from t is classified by
 // t exactly as the per-texel test classifies it, whose value there is then far from 0: the
 // tolerance is far above the few ulps that either computation loses on its largest term
 // (coordinates, edges and texture sides below 2^24 texels).
 struct RowSolver {
-    double base[4], step[4], tolerance[4];  // 0, 1: lower bounds; 2, 3: upper bounds
-    int horizontal = -1;                    // the edge with k = 0, if any
+    // The bounds in use, one per non-horizontal edge (2 or 3): lower[k] for a lower bound.
+    double base[3], step[3], tolerance[3];
+    bool lower[3];
+    int count = 0;
+    int horizontal = -1;  // the edge with k = 0, if any
     int x0, x1, y0;
     RowSolver(const Setup &s, const double reach[3], const double inverse[3], int x0, int x1, int y0)
         : x0(x0), x1(x1), y0(y0) {
         const double c = std::max({std::abs(s.minX), std::abs(s.maxX), std::abs(s.minY), std::abs(s.maxY)}) + 2;
-        int lower = 0, upper = 2;
         for (int i = 0; i < 3; ++i) {
             const Edge &e = s.e[i];
             if (e.ey == 0) {
                 horizontal = i;
                 continue;
             }
-            const int slot = e.ey < 0 ? lower++ : upper++;  // k = -ey
+            const int slot = count++;
+            lower[slot] = e.ey < 0;  // k = -ey
             const double m = e.at(0.0, y0 + 0.5) + reach[i];
             base[slot] = -m * inverse[i] - 0.5;
             step[slot] = -e.ex * inverse[i];
             tolerance[slot] =
                 1e-12 * ((std::abs(e.ex) + std::abs(e.ey)) * 2 * c + std::abs(reach[i])) * std::abs(inverse[i]);
         }
-        for (; lower < 2; ++lower)
-            base[lower] = x0 - 1.5, step[lower] = 0, tolerance[lower] = 0;
-        for (; upper < 4; ++upper)
-            base[upper] = x1 + 1.5, step[upper] = 0, tolerance[upper] = 0;
     }
 };
 // Per edge, 1 / k (0 for a horizontal edge), shared by a triangle's solvers.
@@ -136,11 +135,11 @@ inline void rowSpan(const Setup &s, const double reach[3], const RowSolver &r, i
     const double j = y - r.y0;
     int lo = r.x0, hi = r.x1;
     bool clear = true;
-    for (int slot = 0; slot < 4; ++slot) {
+    for (int slot = 0; slot < r.count; ++slot) {
         const double t = std::clamp(r.base[slot] + j * r.step[slot], r.x0 - 1.5, r.x1 + 1.5);
         const int below = floorToInt(t);  // t in [below, below + 1)
         clear = clear & (t - below > r.tolerance[slot]) & (below + 1 - t > r.tolerance[slot]);
-        if (slot < 2)
+        if (r.lower[slot])
             lo = std::max(lo, below + int(t > below));  // ceil
         else
             hi = std::min(hi, below);
