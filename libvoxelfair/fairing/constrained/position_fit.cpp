@@ -24,7 +24,9 @@
 // writes input + offset to the free and edge-line vertices and the report's counts. removeDrift
 // (step 5 of constrained_fairing.h) averages each vertex's n . d with its neighbours' `rounds`
 // times (Jacobi, over slots: regular blocks read their padded neighbour lists, the rest their
-// corner lists; the same sums in the same order either way) and takes that mean off along n.
+// corner lists; the same sums in the same order either way, four regular slots at once in SSE)
+// and takes that mean off along n. It reads the normals from `fit` (the last pass's, which equal
+// vertexNormal's bits), slot by slot: in memory order, where vertexNormal is by vertex.
 #include "fairing/constrained/fairing_state.h"
 
 #include <algorithm>
@@ -210,7 +212,6 @@ VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds) {
     const uint32_t *const vertexAt = s.vertexAt, *const neighbours = s.slotNeighbours;
     const uint8_t *const regular = s.regularBlock;
     const VertexKind *const kind = s.kind;
-    const VertexNormal *const normal = s.vertexNormal;
     Offset *const offset = s.offset;
     // n . d per vertex (0 for those that do not move), by slot, averaged with the neighbours'
     // `rounds` times (Jacobi). Empty slots and the zero slot have weight 0 and stay 0.
@@ -222,10 +223,12 @@ VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds) {
     // The vertices that are not free, or free outside regular blocks.
     uint32_t *const others = s.scratch.template take<uint32_t>(V);
     size_t otherCount = 0;
+    // (A free vertex's normal is its lane's in `fit`, slot by slot; empty slots' are 0.)
+    const FitBlock *const fit = s.fit;
+    for (size_t slot = 0; slot < s.freeSlots; ++slot)
+        along[slot] = glm::dot(fit[slot / 4].n(int(slot % 4)), offset[slot].d);
     for (size_t v = 0; v < V; ++v) {
         const uint32_t slot = rank[v];
-        if (isFree(kind[v]))
-            along[slot] = glm::dot(normal[v].n, offset[slot].d);
         weight[slot] = 1.0f / float(1 + start[v + 1] - start[v]);
         if (!isFree(kind[v]) || !regular[slot / 4])
             others[otherCount++] = uint32_t(v);
@@ -236,6 +239,20 @@ VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds) {
         for (size_t block = 0; block < blocks; ++block) {
             if (!regular[block])
                 continue;
+#ifdef VOXELFAIR_SSE2
+            // The four slots' sums side by side, each in the order below.
+            const uint32_t *n = neighbours + kRegularValence * 4 * block;
+            auto gather = [&](uint32_t i) {
+                return _mm_setr_ps(along[n[i] / sizeof(Offset)], along[n[kRegularValence + i] / sizeof(Offset)],
+                                   along[n[2 * kRegularValence + i] / sizeof(Offset)],
+                                   along[n[3 * kRegularValence + i] / sizeof(Offset)]);
+            };
+            __m128 sum = _mm_load_ps(along + 4 * block);
+            for (uint32_t i = 0; i < kRegularValence; ++i)
+                sum = _mm_add_ps(sum, gather(i));
+            _mm_store_ps(smooth + 4 * block, _mm_mul_ps(sum, _mm_load_ps(weight + 4 * block)));
+            continue;
+#endif
             for (size_t slot = 4 * block; slot < 4 * block + 4; ++slot) {
                 const uint32_t *n = neighbours + kRegularValence * slot;
                 float sum = along[slot];
@@ -261,7 +278,7 @@ VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds) {
         const uint32_t v = vertexAt[slot];
         if (v != kNone && (held.empty() || !held[v])) {
             Offset &o = offset[slot];
-            o.d = glm::clamp(o.d - along[slot] * normal[v].n, -half, half);
+            o.d = glm::clamp(o.d - along[slot] * fit[slot / 4].n(int(slot % 4)), -half, half);
         }
     }
 }
