@@ -1,0 +1,109 @@
+// The gutter of a baked normal map; the contract is in normal_gutter.h.
+#include "maps/normal_gutter.h"
+
+#include "maps/parallel_bands.h"
+#include "maps/texel_dilation.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <cstring>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+namespace voxelfair {
+
+namespace {
+
+inline uint8_t encodeFast(float c) { return uint8_t(std::clamp(int(c * 127.5f + 128.0f), 0, 255)); }
+
+constexpr int kBlockBandRows = 32;  // even: bands hold whole blocks
+
+// The block at (x, y): its unpainted texels take the renormalised mean of its painted ones.
+void fillBlock(int x, int y, int width, int height, std::vector<uint8_t> &state, uint8_t *image) {
+    int sum[3] = {0, 0, 0}, n = 0, texelCount = 0;
+    size_t at[4];
+    for (int dy = 0; dy < std::min(2, height - y); ++dy)
+        for (int dx = 0; dx < std::min(2, width - x); ++dx) {
+            const size_t t = size_t(y + dy) * size_t(width) + size_t(x + dx);
+            at[texelCount++] = t;
+            if (state[t] & kTexelPainted) {
+                const uint8_t *p = &image[(size_t(height - 1 - y - dy) * size_t(width) + size_t(x + dx)) * 4];
+                for (int c = 0; c < 3; ++c)
+                    sum[c] += 2 * p[c] - 255;
+                ++n;
+            }
+        }
+    if (n == 0 || n == texelCount)
+        return;
+    const glm::vec3 mean{float(sum[0]), float(sum[1]), float(sum[2])};
+    const float length = glm::length(mean);
+    if (!(length > 0.0f))
+        return;
+    const glm::vec3 c = mean / length;
+    for (int k = 0; k < texelCount; ++k)
+        if (!(state[at[k]] & kTexelPainted)) {
+            const size_t x1 = at[k] % size_t(width), y1 = at[k] / size_t(width);
+            uint8_t *p = &image[(size_t(height - 1) - y1) * size_t(width) * 4 + x1 * 4];
+            p[0] = encodeFast(c.x), p[1] = encodeFast(c.y), p[2] = encodeFast(c.z);
+            state[at[k]] |= kTexelPainted;
+        }
+}
+
+}  // namespace
+
+void fillNormalGutter(int width, int height, std::vector<uint8_t> &state, std::vector<uint8_t> &rgba, int rings,
+                      bool blocks, int threads) {
+    const uint8_t *const painted = state.data();
+    uint8_t *const image = rgba.data();
+    dilateTexels(width, height, state, rings, threads, [painted, image, width, height](int x, int y) {
+        // The mean of the decoded neighbours, (2 c - 255) / 255 each, up to its scale: integers.
+        int sx = 0, sy = 0, sz = 0, n = 0;
+        for (int ny = std::max(y - 1, 0); ny <= std::min(y + 1, height - 1); ++ny) {
+            const uint8_t *const row = painted + size_t(ny) * size_t(width);
+            const uint8_t *const colours = image + size_t(height - 1 - ny) * size_t(width) * 4;
+            for (int nx = std::max(x - 1, 0); nx <= std::min(x + 1, width - 1); ++nx) {
+                const int m = row[nx] & kTexelPainted;  // 0 or 1: branch-free sums
+                const uint8_t *p = colours + size_t(nx) * 4;
+                sx += m * p[0], sy += m * p[1], sz += m * p[2], n += m;
+            }
+        }
+        const glm::vec3 sum(float(2 * sx - 255 * n), float(2 * sy - 255 * n), float(2 * sz - 255 * n));
+        const float length = glm::length(sum);
+        if (!(length > 0.0f))
+            return false;
+        const glm::vec3 c = sum / length;
+        uint8_t *p = image + (size_t(height - 1 - y) * size_t(width) + size_t(x)) * 4;
+        p[0] = encodeFast(c.x), p[1] = encodeFast(c.y), p[2] = encodeFast(c.z);
+        return true;
+    });
+    if (!blocks)
+        return;
+    // Every aligned 2 x 2 block with a painted texel belongs to one chart (the atlas' packing).
+    // Most blocks are all painted or all empty: 4 blocks (8 texels of 2 rows) are tested at once
+    // and skipped when so.
+    const size_t bands = size_t((height + kBlockBandRows - 1) / kBlockBandRows);
+    runBands(bands, threads, [&](size_t band) {
+        const int r0 = int(band) * kBlockBandRows, r1 = std::min(height, r0 + kBlockBandRows);
+        constexpr uint64_t kAll = 0x0101010101010101ull * kTexelPainted;
+        for (int y = r0; y < r1; y += 2) {
+            const uint8_t *const row0 = &state[size_t(y) * size_t(width)];
+            const uint8_t *const row1 = y + 1 < height ? row0 + width : nullptr;
+            int x = 0;
+            for (; row1 && x + 8 <= width; x += 8) {
+                uint64_t a = 0, b = 0;
+                std::memcpy(&a, row0 + x, 8);
+                std::memcpy(&b, row1 + x, 8);
+                a &= kAll, b &= kAll;
+                if ((a | b) == 0 || (a & b) == kAll)
+                    continue;
+                for (int k = x; k < x + 8; k += 2)
+                    fillBlock(k, y, width, height, state, image);
+            }
+            for (; x < width; x += 2)
+                fillBlock(x, y, width, height, state, image);
+        }
+    });
+}
+
+}  // namespace voxelfair
