@@ -102,13 +102,26 @@ SurfaceWalk::Hit SurfaceWalk::closestAround(const glm::vec3 &p, uint32_t face, c
     Hit best{face, closest(face)};
     glm::vec3 q = point(face, best.weights);
     float bestDistance = glm::dot(q - p, q - p);
+    // Faces already measured (a face shares the fans of two or three corners, and rounds overlap)
+    // are not measured again: each lost to a best distance no larger than today's.
+    constexpr int kSeen = 64;
+    uint32_t seen[kSeen] = {face};
+    int seenCount = 1;
+    auto measured = [&](uint32_t f) {
+        for (int i = 0; i < seenCount; ++i)
+            if (seen[i] == f)
+                return true;
+        if (seenCount < kSeen)
+            seen[seenCount++] = f;
+        return false;
+    };
     for (int round = 0; round < 16; ++round) {
         const uint32_t centre = best.face;
         for (int k = 0; k < 3; ++k) {
             const uint32_t v = triangles_[3 * size_t(centre) + size_t(k)];
             for (uint32_t i = vertexFaceStart_[v]; i < vertexFaceStart_[v + 1]; ++i) {
                 const uint32_t f = vertexFaces_[i];
-                if (f == best.face || glm::dot(faces_[f].normal, facing) <= 0.0f)
+                if (f == best.face || glm::dot(faces_[f].normal, facing) <= 0.0f || measured(f))
                     continue;
                 const glm::vec3 weights = closest(f);
                 q = point(f, weights);
