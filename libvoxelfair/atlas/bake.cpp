@@ -1,6 +1,7 @@
 #include "atlas/bake.h"
 
 #include "atlas/texel_raster.h"
+#include "maps/parallel_bands.h"
 #include "base/error.h"
 
 #include <algorithm>
@@ -26,6 +27,9 @@ namespace {
 // Slightly strict coverage (see kMaskMargin in chart_masks.cpp): the bake never paints outside
 // the packed masks.
 constexpr double kBakeMargin = -1.0 / 256;
+
+// Meshes with fewer faces are painted on one thread: starting threads would cost more.
+constexpr size_t kLeastParallelFaces = 4096;
 
 // The image being baked: RGBA rows from the top, as AtlasTexture::rgba, and per texel whether
 // it is painted (a face's texel or a dilation ring's).
@@ -71,44 +75,59 @@ BakeSource chooseSource(const AtlasMesh &mesh, BakeSource wanted, std::string &n
 // The first ring is the empty texels with a filled 8-neighbour, found a row at a time (the rows
 // above, at and below or-ed, then each texel's left and right); each later ring, the empty
 // neighbours of the ring before.
-void dilate(Canvas &canvas, int rings) {
+void dilate(Canvas &canvas, int rings, int threads) {
     const int width = canvas.width, height = canvas.height;
     std::vector<uint8_t> &filled = canvas.filled;  // 1 filled, 2 in the ring being found
-    std::vector<uint8_t> column(size_t(width) + 2, 0), near(size_t(width), 0);
     std::vector<uint32_t> frontier, next;
-    for (int row = 0; row < height && rings > 0; ++row) {
-        const uint8_t *mid = &filled[size_t(row) * size_t(width)];
-        const uint8_t *up = row > 0 ? mid - width : mid, *down = row + 1 < height ? mid + width : mid;
-        for (int x = 0; x < width; ++x)
-            column[size_t(x) + 1] = uint8_t(up[x] | mid[x] | down[x]);
-        for (int x = 0; x < width; ++x)
-            near[size_t(x)] = uint8_t((column[size_t(x)] | column[size_t(x) + 1] | column[size_t(x) + 2]) & ~mid[x]);
-        for (int x = 0; x < width; x += 8) {
-            uint64_t word = 0;
-            std::memcpy(&word, &near[size_t(x)], size_t(std::min(8, width - x)));
-            for (int k = 0; word != 0 && k < 8; ++k, word >>= 8)
-                if (word & 0xFF)
-                    frontier.push_back(uint32_t(size_t(row) * size_t(width) + size_t(x + k)));
+    if (rings <= 0)
+        return;
+    // The first ring in bands of rows (on up to `threads` threads), joined in row order.
+    const size_t bands = threads > 1 ? size_t(std::min(height, 4 * threads)) : 1;
+    std::vector<std::vector<uint32_t>> found(bands);
+    runBands(bands, threads, [&](size_t band) {
+        std::vector<uint8_t> column(size_t(width) + 2, 0), near(size_t(width), 0);
+        const int from = int(size_t(height) * band / bands), to = int(size_t(height) * (band + 1) / bands);
+        for (int row = from; row < to; ++row) {
+            const uint8_t *mid = &filled[size_t(row) * size_t(width)];
+            const uint8_t *up = row > 0 ? mid - width : mid, *down = row + 1 < height ? mid + width : mid;
+            for (int x = 0; x < width; ++x)
+                column[size_t(x) + 1] = uint8_t(up[x] | mid[x] | down[x]);
+            for (int x = 0; x < width; ++x)
+                near[size_t(x)] =
+                    uint8_t((column[size_t(x)] | column[size_t(x) + 1] | column[size_t(x) + 2]) & ~mid[x]);
+            for (int x = 0; x < width; x += 8) {
+                uint64_t word = 0;
+                std::memcpy(&word, &near[size_t(x)], size_t(std::min(8, width - x)));
+                for (int k = 0; word != 0 && k < 8; ++k, word >>= 8)
+                    if (word & 0xFF)
+                        found[band].push_back(uint32_t(size_t(row) * size_t(width) + size_t(x + k)));
+            }
         }
-    }
+    });
+    for (const std::vector<uint32_t> &f : found)
+        frontier.insert(frontier.end(), f.begin(), f.end());
     std::vector<uint8_t> colours;
     for (int ring = 0; ring < rings && !frontier.empty(); ++ring) {
+        // Each ring texel's colour from its painted neighbours (read only), then all painted.
         colours.resize(3 * frontier.size());
-        for (size_t k = 0; k < frontier.size(); ++k) {
-            const int row = int(frontier[k] / uint32_t(width)), x = int(frontier[k] % uint32_t(width));
-            unsigned sum[3] = {0, 0, 0}, count = 0;
-            for (int ny = std::max(0, row - 1); ny <= std::min(height - 1, row + 1); ++ny)
-                for (int nx = std::max(0, x - 1); nx <= std::min(width - 1, x + 1); ++nx) {
-                    const size_t j = size_t(ny) * size_t(width) + size_t(nx);
-                    if (filled[j] == 1) {
-                        for (int ch = 0; ch < 3; ++ch)
-                            sum[ch] += canvas.rgba[4 * j + size_t(ch)];
-                        ++count;
+        const size_t chunks = threads > 1 && frontier.size() >= 4096 ? size_t(4 * threads) : 1;
+        runBands(chunks, threads, [&](size_t chunk) {
+            for (size_t k = frontier.size() * chunk / chunks; k < frontier.size() * (chunk + 1) / chunks; ++k) {
+                const int row = int(frontier[k] / uint32_t(width)), x = int(frontier[k] % uint32_t(width));
+                unsigned sum[3] = {0, 0, 0}, count = 0;
+                for (int ny = std::max(0, row - 1); ny <= std::min(height - 1, row + 1); ++ny)
+                    for (int nx = std::max(0, x - 1); nx <= std::min(width - 1, x + 1); ++nx) {
+                        const size_t j = size_t(ny) * size_t(width) + size_t(nx);
+                        if (filled[j] == 1) {
+                            for (int ch = 0; ch < 3; ++ch)
+                                sum[ch] += canvas.rgba[4 * j + size_t(ch)];
+                            ++count;
+                        }
                     }
-                }
-            for (int ch = 0; ch < 3; ++ch)
-                colours[3 * k + size_t(ch)] = uint8_t((sum[ch] + count / 2) / count);
-        }
+                for (int ch = 0; ch < 3; ++ch)
+                    colours[3 * k + size_t(ch)] = uint8_t((sum[ch] + count / 2) / count);
+            }
+        });
         for (size_t k = 0; k < frontier.size(); ++k)
             canvas.paint(frontier[k], {colours[3 * k], colours[3 * k + 1], colours[3 * k + 2]});
         next.clear();
@@ -131,36 +150,47 @@ void dilate(Canvas &canvas, int rings) {
 // Layouts on 2 x 2 blocks (AtlasLayout::block): each aligned block with a painted texel belongs
 // to one chart (its texels, or its first ring, which lies inside its packed mask), so its empty
 // texels take the mean of its painted ones; a box-filtered mip level 1 then never mixes charts.
-void fillBlocks(Canvas &canvas) {
-    for (int y = 0; y < canvas.height; y += 2)
-        for (int x = 0; x < canvas.width; x += 2) {
-            if (y + 1 < canvas.height && x + 1 < canvas.width) {  // a whole block, all painted or none: as it is
-                uint16_t low = 0, high = 0;
-                std::memcpy(&low, &canvas.filled[canvas.index(x, y)], 2);
-                std::memcpy(&high, &canvas.filled[canvas.index(x, y + 1)], 2);
-                if ((low | high) == 0 || (low == 0x0101 && high == 0x0101))
-                    continue;
-            }
-            size_t at[4];
-            int n = 0;
-            for (int dy = 0; dy < std::min(2, canvas.height - y); ++dy)
-                for (int dx = 0; dx < std::min(2, canvas.width - x); ++dx)
-                    at[n++] = canvas.index(x + dx, y + dy);
-            unsigned sum[3] = {0, 0, 0}, count = 0;
-            for (int k = 0; k < n; ++k)
-                if (canvas.filled[at[k]] == 1) {
-                    for (int ch = 0; ch < 3; ++ch)
-                        sum[ch] += canvas.rgba[4 * at[k] + size_t(ch)];
-                    ++count;
-                }
-            if (count == 0 || int(count) == n)
+// Here the blocks of rows y and y + 1.
+void fillBlockRow(Canvas &canvas, int y) {
+    for (int x = 0; x < canvas.width; x += 2) {
+        if (y + 1 < canvas.height && x + 1 < canvas.width) {  // a whole block, all painted or none: as it is
+            uint16_t low = 0, high = 0;
+            std::memcpy(&low, &canvas.filled[canvas.index(x, y)], 2);
+            std::memcpy(&high, &canvas.filled[canvas.index(x, y + 1)], 2);
+            if ((low | high) == 0 || (low == 0x0101 && high == 0x0101))
                 continue;
-            const glm::u8vec3 mean((sum[0] + count / 2) / count, (sum[1] + count / 2) / count,
-                                   (sum[2] + count / 2) / count);
-            for (int k = 0; k < n; ++k)
-                if (canvas.filled[at[k]] != 1)
-                    canvas.paint(at[k], mean);
         }
+        size_t at[4];
+        int n = 0;
+        for (int dy = 0; dy < std::min(2, canvas.height - y); ++dy)
+            for (int dx = 0; dx < std::min(2, canvas.width - x); ++dx)
+                at[n++] = canvas.index(x + dx, y + dy);
+        unsigned sum[3] = {0, 0, 0}, count = 0;
+        for (int k = 0; k < n; ++k)
+            if (canvas.filled[at[k]] == 1) {
+                for (int ch = 0; ch < 3; ++ch)
+                    sum[ch] += canvas.rgba[4 * at[k] + size_t(ch)];
+                ++count;
+            }
+        if (count == 0 || int(count) == n)
+            continue;
+        const glm::u8vec3 mean((sum[0] + count / 2) / count, (sum[1] + count / 2) / count,
+                               (sum[2] + count / 2) / count);
+        for (int k = 0; k < n; ++k)
+            if (canvas.filled[at[k]] != 1)
+                canvas.paint(at[k], mean);
+    }
+}
+
+// Every block, rows of blocks in bands on up to `threads` threads (blocks are disjoint).
+void fillBlocks(Canvas &canvas, int threads) {
+    const int blockRows = (canvas.height + 1) / 2;
+    const size_t bands = threads > 1 ? size_t(std::min(blockRows, 4 * threads)) : 1;
+    runBands(bands, threads, [&](size_t band) {
+        const int from = int(size_t(blockRows) * band / bands), to = int(size_t(blockRows) * (band + 1) / bands);
+        for (int b = from; b < to; ++b)
+            fillBlockRow(canvas, 2 * b);
+    });
 }
 
 }  // namespace
@@ -199,31 +229,16 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
     };
 
     const glm::dvec2 extent(width, height);
-    glm::dvec2 q[3];
-    auto load = [&](size_t f) {
+    auto load = [&](size_t f, glm::dvec2 *q) {
         for (int k = 0; k < 3; ++k)
             q[k] = glm::dvec2(layout.wedgeUv[3 * f + k]) * extent;
     };
-    // One pass: a face paints the texels whose centre it holds (no other face holds them), then
-    // those it only overlaps that nothing painted yet; a later face's centre texels overwrite
-    // such edge texels. Crisp bakes also note the faces too thin for the centre rule (below).
     const bool crisp = out.source == BakeSource::FaceColours;
     const bool uniform = out.source != BakeSource::VertexColours;  // one colour per face
-    std::vector<uint32_t> thin;
-    glm::dvec2 points[4] = {};
-    for (size_t f = 0; f < mesh.faceCount; ++f) {
-        load(f);
-        if (crisp) {
-            const double inradius = faceInteriorPoints(q, points);
-            if (inradius > 0 && inradius < std::sqrt(2.0) + 2 * kUvRounding)
-                thin.push_back(uint32_t(f));
-        }
+    // Face f (UVs q in texels) on rows rowFrom..rowTo: the texels whose centre it holds (no other
+    // face holds them), then those it only overlaps that nothing painted yet.
+    auto paintFace = [&](size_t f, const glm::dvec2 *q, int rowFrom, int rowTo) {
         const glm::u8vec3 faceColour = uniform ? colourAt(f, q, 0, 0) : glm::u8vec3(0);
-        auto paintEdges = [&](size_t row, int y, int from, int to) {
-            for (int x = from; x <= to; ++x)
-                if (!canvas.filled[row + size_t(x)])
-                    canvas.paint(row + size_t(x), uniform ? faceColour : colourAt(f, q, x + 0.5, y + 0.5));
-        };
         if (uniform) {  // one colour: whole spans at once, through raw pointers
             const uint8_t texel[4] = {faceColour.r, faceColour.g, faceColour.b, 255};
             uint8_t *rgba = canvas.rgba.data(), *filled = canvas.filled.data();
@@ -240,32 +255,73 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
                         filled[i] = 1;
                     }
             };
-            rasterRows(q[0], q[1], q[2], kBakeMargin, width, height, [&](int y, int cl, int cr, int zl, int zr) {
-                const size_t row = canvas.index(0, y);
-                if (zl > zr) {
-                    fillEmpty(row + size_t(cl), row + size_t(cr) + 1);
-                    return;
-                }
-                fill(row + size_t(zl), row + size_t(zr) + 1);
-                if (cl < zl)
-                    fillEmpty(row + size_t(cl), row + size_t(std::min(cr, zl - 1)) + 1);
-                if (cr > zr)
-                    fillEmpty(row + size_t(std::max(cl, zr + 1)), row + size_t(cr) + 1);
-            });
-            continue;
+            rasterRows(
+                q[0], q[1], q[2], kBakeMargin, width, height,
+                [&](int y, int cl, int cr, int zl, int zr) {
+                    const size_t row = canvas.index(0, y);
+                    if (zl > zr) {
+                        fillEmpty(row + size_t(cl), row + size_t(cr) + 1);
+                        return;
+                    }
+                    fill(row + size_t(zl), row + size_t(zr) + 1);
+                    if (cl < zl)
+                        fillEmpty(row + size_t(cl), row + size_t(std::min(cr, zl - 1)) + 1);
+                    if (cr > zr)
+                        fillEmpty(row + size_t(std::max(cl, zr + 1)), row + size_t(cr) + 1);
+                },
+                rowFrom, rowTo);
+            return;
         }
-        rasterRows(q[0], q[1], q[2], kBakeMargin, width, height, [&](int y, int cl, int cr, int zl, int zr) {
-            const size_t row = canvas.index(0, y);
-            for (int x = zl; x <= zr; ++x)
-                canvas.paint(row + size_t(x), uniform ? faceColour : colourAt(f, q, x + 0.5, y + 0.5));
-            if (zl > zr) {
-                paintEdges(row, y, cl, cr);
-            } else {
-                paintEdges(row, y, cl, std::min(cr, zl - 1));
-                paintEdges(row, y, std::max(cl, zr + 1), cr);
+        auto paintEdges = [&](size_t row, int y, int from, int to) {
+            for (int x = from; x <= to; ++x)
+                if (!canvas.filled[row + size_t(x)])
+                    canvas.paint(row + size_t(x), colourAt(f, q, x + 0.5, y + 0.5));
+        };
+        rasterRows(
+            q[0], q[1], q[2], kBakeMargin, width, height,
+            [&](int y, int cl, int cr, int zl, int zr) {
+                const size_t row = canvas.index(0, y);
+                for (int x = zl; x <= zr; ++x)
+                    canvas.paint(row + size_t(x), colourAt(f, q, x + 0.5, y + 0.5));
+                if (zl > zr) {
+                    paintEdges(row, y, cl, cr);
+                } else {
+                    paintEdges(row, y, cl, std::min(cr, zl - 1));
+                    paintEdges(row, y, std::max(cl, zr + 1), cr);
+                }
+            },
+            rowFrom, rowTo);
+    };
+    // Every face in order; a later face's centre texels overwrite earlier faces' edge texels.
+    // Crisp bakes also note the faces too thin for the centre rule (below). Bands of rows run on
+    // their own threads, each taking every face in order on its rows only: the same texels as one
+    // pass, for any thread count.
+    const int workers = bandThreads(options.threads, size_t(height));
+    const size_t bands = workers > 1 && mesh.faceCount >= kLeastParallelFaces ? size_t(2 * workers) : 1;
+    std::vector<std::vector<uint32_t>> thinOf(bands);  // band b notes the thin faces of its share of them
+    runBands(bands, workers, [&](size_t band) {
+        const int rowFrom = int(size_t(height) * band / bands);
+        const int rowTo = int(size_t(height) * (band + 1) / bands) - 1;
+        const size_t noteFrom = mesh.faceCount * band / bands, noteTo = mesh.faceCount * (band + 1) / bands;
+        glm::dvec2 q[3], points[4] = {};
+        for (size_t f = 0; f < mesh.faceCount; ++f) {
+            load(f, q);
+            if (crisp && f >= noteFrom && f < noteTo) {
+                const double inradius = faceInteriorPoints(q, points);
+                if (inradius > 0 && inradius < std::sqrt(2.0) + 2 * kUvRounding)
+                    thinOf[band].push_back(uint32_t(f));
             }
-        });
-    }
+            // A face reaches rows floor(min y - 1 - margin) to floor(max y + margin) (margin < 0).
+            if (bands > 1 && (std::max({q[0].y, q[1].y, q[2].y}) < rowFrom - 1.0 ||
+                              std::min({q[0].y, q[1].y, q[2].y}) > rowTo + 2.0))
+                continue;
+            paintFace(f, q, rowFrom, rowTo);
+        }
+    });
+    std::vector<uint32_t> thin;
+    for (const std::vector<uint32_t> &t : thinOf)
+        thin.insert(thin.end(), t.begin(), t.end());
+    glm::dvec2 q[3], points[4] = {};
     // Faces too thin for the centre rule to guarantee their interior (UV inradius under sqrt(2)
     // texels: a texel holding one of their interior points may have its centre in a neighbour)
     // paint the texels under their interior points with their own colour, and the texels
@@ -277,7 +333,7 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
     // closer than sqrt(2) + 0.01 texels), so the order does not matter.
     auto texelOf = [](double v, int n) { return std::clamp(int(std::floor(v)), 0, n - 1); };
     for (uint32_t f : thin) {
-        load(f);
+        load(f, q);
         faceInteriorPoints(q, points);
         for (const glm::dvec2 &p : points) {
             const int x0 = texelOf(p.x - kUvRounding, width), x1 = texelOf(p.x + kUvRounding, width);
@@ -288,9 +344,9 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
         }
     }
     out.dilation = options.dilation < 0 ? layout.gutter / 2 : std::min(options.dilation, width);
-    dilate(canvas, out.dilation);
+    dilate(canvas, out.dilation, bands > 1 ? workers : 1);
     if (layout.block == 2 && out.dilation > 0)
-        fillBlocks(canvas);
+        fillBlocks(canvas, bands > 1 ? workers : 1);
     return out;
 }
 

@@ -45,6 +45,9 @@ struct BakeOptions {
     glm::u8vec4 background{0, 0, 0, 0};
     // Used when the mesh has no colours at all.
     glm::u8vec3 flatColour{200, 200, 200};
+    // Threads painting the faces, each its own rows (0: one per hardware thread); the texture is
+    // the same for any count.
+    int threads = 0;
 };
 
 struct AtlasTexture {

@@ -34,7 +34,8 @@ struct ChartBitmaps {
 // Builds bitmaps of the charts whose coarse mask covers at least `leastBlocks` blocks, from the
 // fine masks (texels, rasterised with keepSpans: their spans and padding) and their coarse masks (blocks), and
 // lowers coarse.totalRowTexels to the blocks the bitmaps' row spans hold.
+// On up to `threads` threads (0: one per hardware thread); the same bitmaps for any count.
 void rasterizeChartBitmaps(const AtlasCharts &charts, const ChartMasks &fine, ChartMasks &coarse, int64_t leastBlocks,
-                           ChartBitmaps &out);
+                           ChartBitmaps &out, int threads = 0);
 
 }  // namespace voxelfair

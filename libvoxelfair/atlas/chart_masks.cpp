@@ -1,6 +1,7 @@
 #include "atlas/chart_masks.h"
 
 #include "atlas/texel_raster.h"
+#include "maps/parallel_bands.h"
 
 #include <algorithm>
 #include <cmath>
@@ -30,17 +31,21 @@ void windowMin(const std::vector<int> &v, int from, int count, int r, int *out) 
     }
 }
 
-}  // namespace
+// Charts rasterised by one band (rasterizeChartMasks): their profiles and spans, each chart's
+// spans ending at spanEnd.
+struct MaskPart {
+    std::vector<int16_t> profiles, spans;
+    std::vector<size_t> spanEnd;
+    size_t totalRowTexels = 0;
+};
 
-bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int padding, int maxSide, ChartMasks &masks,
-                         bool keepSpans) {
-    masks.spans.clear();
-    masks.spanFirst.assign(keepSpans ? 1 : 0, 0);
-    masks.charts.assign(charts.chartCount(), ChartMask{});
-    masks.profiles.clear();
-    masks.texelsPerUnit = texelsPerUnit;
-    masks.padding = padding;
-    masks.totalRowTexels = 0;
+// Fewer faces than this are rasterised on one thread: starting threads would cost more.
+constexpr size_t kLeastParallelFaces = 4096;
+
+// Charts [first, end) into `part` (profiles and spans counted from its own start) and
+// masks[first, end): false as soon as one is too large.
+bool rasterizeRange(const AtlasCharts &charts, size_t first, size_t end, double texelsPerUnit, int padding, int maxSide,
+                    bool keepSpans, ChartMask *masks, MaskPart &part) {
     // The footprint's extent per row (leftmost, rightmost column) and per column (lowest,
     // highest row) in the chart's canvas; kNone where nothing is set. Only these extents reach
     // the packers, so the footprint itself is never stored: the square dilation by `padding`
@@ -49,7 +54,7 @@ bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int pa
     const int border = padding + 1;  // the footprint may reach one texel below its box
     if (keepSpans) {  // room for every triangle's rows at once: growing the spans costs more than the rows
         double rows = 0;
-        for (size_t c = 0; c < charts.chartCount(); ++c) {
+        for (size_t c = first; c < end; ++c) {
             const double scale = charts.isDegenerate(c) ? 1.0 : texelsPerUnit;
             for (size_t i = charts.chartFirstFace[c]; i < charts.chartFirstFace[c + 1]; ++i) {
                 const glm::vec2 *uv = &charts.wedgeUv[3 * i];
@@ -57,10 +62,10 @@ bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int pa
             }
         }
         if (rows < 1e9)
-            masks.spans.reserve(3 * size_t(rows));
+            part.spans.reserve(3 * size_t(rows));
     }
-    for (size_t c = 0; c < charts.chartCount(); ++c) {
-        ChartMask &m = masks.charts[c];
+    for (size_t c = first; c < end; ++c) {
+        ChartMask &m = masks[c];
         m.scale = charts.isDegenerate(c) ? 1.0 : texelsPerUnit;
         const glm::dvec2 size = glm::dvec2(charts.chartSize[c]) * m.scale;
         if (!(size.x < maxSide && size.y < maxSide))
@@ -76,9 +81,9 @@ bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int pa
                 glm::dvec2(uv[0]) * m.scale + double(border), glm::dvec2(uv[1]) * m.scale + double(border),
                 glm::dvec2(uv[2]) * m.scale + double(border), kMaskMargin, w, h, [&](int y, int xl, int xr) {
                     if (keepSpans) {
-                        masks.spans.push_back(int16_t(y));
-                        masks.spans.push_back(int16_t(xl));
-                        masks.spans.push_back(int16_t(xr));
+                        part.spans.push_back(int16_t(y));
+                        part.spans.push_back(int16_t(xl));
+                        part.spans.push_back(int16_t(xr));
                     }
                     rowLeft[size_t(y)] = std::min(rowLeft[size_t(y)], xl);
                     rowRight[size_t(y)] = std::max(rowRight[size_t(y)], xr);
@@ -109,17 +114,17 @@ bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int pa
             return false;
         m.offset = glm::dvec2(border - x0, border - y0);
         if (keepSpans) {  // canvas -> mask texels
-            for (size_t k = masks.spanFirst.back(); k < masks.spans.size(); k += 3) {
-                masks.spans[k] = int16_t(masks.spans[k] - y0);
-                masks.spans[k + 1] = int16_t(masks.spans[k + 1] - x0);
-                masks.spans[k + 2] = int16_t(masks.spans[k + 2] - x0);
+            for (size_t k = part.spanEnd.empty() ? 0 : part.spanEnd.back(); k < part.spans.size(); k += 3) {
+                part.spans[k] = int16_t(part.spans[k] - y0);
+                part.spans[k + 1] = int16_t(part.spans[k + 1] - x0);
+                part.spans[k + 2] = int16_t(part.spans[k + 2] - x0);
             }
-            masks.spanFirst.push_back(masks.spans.size());
+            part.spanEnd.push_back(part.spans.size());
         }
 
-        m.profile = masks.profiles.size();
-        masks.profiles.resize(m.profile + 2 * size_t(m.width) + 2 * size_t(m.height));
-        int16_t *bottom = masks.profiles.data() + m.profile, *top = bottom + m.width;
+        m.profile = part.profiles.size();
+        part.profiles.resize(m.profile + 2 * size_t(m.width) + 2 * size_t(m.height));
+        int16_t *bottom = part.profiles.data() + m.profile, *top = bottom + m.width;
         int16_t *left = top + m.width, *right = left + m.height;
         // The dilated mask's extent on a line is the footprint's over the 2 * padding + 1 lines
         // around it, widened by padding; maxima are taken as minima of the negations.
@@ -141,8 +146,59 @@ bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int pa
             }
             return texels;
         };
-        masks.totalRowTexels += size_t(extents(rowLeft, rowRight, y0, m.height, x0, m.width, left, right));
+        part.totalRowTexels += size_t(extents(rowLeft, rowRight, y0, m.height, x0, m.width, left, right));
         extents(colBottom, colTop, x0, m.width, y0, m.height, bottom, top);
+    }
+    return true;
+}
+
+}  // namespace
+
+bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int padding, int maxSide, ChartMasks &masks,
+                         bool keepSpans, int threads) {
+    masks.spans.clear();
+    masks.spanFirst.assign(keepSpans ? 1 : 0, 0);
+    masks.charts.assign(charts.chartCount(), ChartMask{});
+    masks.profiles.clear();
+    masks.texelsPerUnit = texelsPerUnit;
+    masks.padding = padding;
+    masks.totalRowTexels = 0;
+    // Runs of charts of about equal faces, a few per thread, rasterised apart and joined in
+    // order: the masks are the same for any thread count.
+    const size_t chartCount = charts.chartCount(), faces = charts.faceCount();
+    const int workers = bandThreads(threads, chartCount);
+    const size_t bands =
+        workers > 1 && faces >= kLeastParallelFaces ? std::min<size_t>(4 * size_t(workers), chartCount) : 1;
+    std::vector<size_t> from(bands + 1, chartCount);
+    from[0] = 0;
+    for (size_t b = 1, c = 0; b < bands; ++b) {
+        while (c < chartCount && charts.chartFirstFace[c] < faces * b / bands)
+            ++c;
+        from[b] = c;
+    }
+    std::vector<MaskPart> parts(bands);
+    std::vector<uint8_t> fits(bands, 0);
+    runBands(bands, workers, [&](size_t b) {
+        fits[b] = rasterizeRange(charts, from[b], from[b + 1], texelsPerUnit, padding, maxSide, keepSpans,
+                                 masks.charts.data(), parts[b]);
+    });
+    for (size_t b = 0; b < bands; ++b) {
+        if (!fits[b])
+            return false;
+        MaskPart &part = parts[b];
+        const size_t profileBase = masks.profiles.size(), spanBase = masks.spans.size();
+        for (size_t c = from[b]; c < from[b + 1]; ++c)
+            masks.charts[c].profile += profileBase;
+        for (size_t e : part.spanEnd)
+            masks.spanFirst.push_back(spanBase + e);
+        masks.totalRowTexels += part.totalRowTexels;
+        if (bands == 1) {
+            masks.profiles.swap(part.profiles);
+            masks.spans.swap(part.spans);
+        } else {
+            masks.profiles.insert(masks.profiles.end(), part.profiles.begin(), part.profiles.end());
+            masks.spans.insert(masks.spans.end(), part.spans.begin(), part.spans.end());
+        }
     }
     return true;
 }

@@ -57,8 +57,9 @@ struct ChartPlacement {
 
 // Rasterises every chart at `texelsPerUnit`. Returns false (and leaves `masks` partial) as soon
 // as a mask would be wider or taller than maxSide, which bounds the work for absurd densities.
+// On up to `threads` threads (0: one per hardware thread); the masks are the same for any count.
 bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int padding, int maxSide, ChartMasks &masks,
-                         bool keepSpans = false);
+                         bool keepSpans = false, int threads = 0);
 
 // The masks on a grid of 2 x 2 texel blocks (PackOptions::mipBlocks): a block is set when any
 // of its texels is, so masks placed without overlap at even texels share no block. Mask sizes

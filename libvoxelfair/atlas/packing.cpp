@@ -30,12 +30,12 @@ struct Packing {
     const ChartMasks &packed() const { return block > 1 ? blocks : masks; }
 };
 
-bool rasterize(const AtlasCharts &charts, double density, int padding, int maxSide, Packing &out) {
-    if (!rasterizeChartMasks(charts, density, padding, maxSide, out.masks, out.block > 1))
+bool rasterize(const AtlasCharts &charts, double density, int padding, int maxSide, int threads, Packing &out) {
+    if (!rasterizeChartMasks(charts, density, padding, maxSide, out.masks, out.block > 1, threads))
         return false;
     if (out.block > 1) {
         coarsenChartMasks(out.masks, out.blocks);
-        rasterizeChartBitmaps(charts, out.masks, out.blocks, kLeastBitmapBlocks, out.bitmaps);
+        rasterizeChartBitmaps(charts, out.masks, out.blocks, kLeastBitmapBlocks, out.bitmaps, threads);
     }
     return true;
 }
@@ -77,7 +77,7 @@ Fit place(Packing &packing, PackMode mode, int side, int height, bool turns) {
 Fit attempt(const AtlasCharts &charts, const PackOptions &o, double density, int padding, int side, int height,
             Packing &out, size_t &attempts) {
     ++attempts;
-    if (!rasterize(charts, density, padding, side, out))
+    if (!rasterize(charts, density, padding, side, o.threads, out))
         return {};  // a chart alone is wider than the texture
     return place(out, o.mode, side, height, o.allowRotation);
 }
@@ -271,7 +271,7 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
         bool fits = false;
         double filled = 0, reached = 0;
         ++out.packAttempts;
-        if (rasterize(charts, out.texelsPerUnit, padding, maxSide, packing)) {
+        if (rasterize(charts, out.texelsPerUnit, padding, maxSide, options.threads, packing)) {
             const int b = packing.block;
             int longest = 1, longestShort = 1;
             for (const ChartMask &m : packing.packed().charts) {

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include <glm/vec2.hpp>
 
@@ -282,8 +283,10 @@ void rasterCentres(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, int width, int heig
 // Both at once, row by row, for a bake: visitRow(y, cl, cr, zl, zr) for every row with
 // conservative texels cl..cr (rasterConservativeSpans, margin > -0.5), of which zl..zr
 // (rasterCentres; zl > zr: none) hold their centre inside the triangle.
+// Only rows rowFrom..rowTo are visited (the same spans: a band of rows of a larger raster).
 template <class VisitRow>
-void rasterRows(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double margin, int width, int height, VisitRow &&visitRow) {
+void rasterRows(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double margin, int width, int height, VisitRow &&visitRow,
+                int rowFrom = 0, int rowTo = INT32_MAX) {
     raster_detail::Setup s;
     if (!raster_detail::setup(a, b, c, s))
         return;
@@ -298,7 +301,7 @@ void rasterRows(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double margin, int wid
                                                     conservative.y0);
     const raster_detail::RowSolver centreRows(s, zero, inverse, centre.x0, centre.x1, centre.y0);
     const bool centres = centre.x0 <= centre.x1;
-    for (int y = conservative.y0; y <= conservative.y1; ++y) {
+    for (int y = std::max(conservative.y0, rowFrom); y <= std::min(conservative.y1, rowTo); ++y) {
         int cl, cr, zl = 0, zr = -1;
         raster_detail::rowSpan(s, conservative.reach, conservativeRows, y, conservative, cl, cr);
         if (centres && y >= centre.y0 && y <= centre.y1)

@@ -13,6 +13,7 @@
 #include <limits>
 #include <random>
 #include <set>
+#include <string>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -615,6 +616,33 @@ TEST(Packing, IsDeterministic) {
     const TestMesh mesh = smoothed(voxelBlob(8, 5));
     const AtlasCharts charts = computeCharts(mesh.view());
     EXPECT_EQ(packCharts(charts).wedgeUv, packCharts(charts).wedgeUv);
+}
+
+// Masks, bitmaps and the bake run on threads in bands; the result must not depend on how many.
+TEST(Packing, ThreadCountChangesNothing) {
+    const TestMesh mesh = smoothed(voxelSphere(20));  // ~10k faces: above the parallel thresholds
+    ASSERT_GE(mesh.faceCount(), 4096u);
+    for (BakeSource source : {BakeSource::FaceColours, BakeSource::VertexColours}) {
+        for (int dilation : {-1, 2}) {
+            SCOPED_TRACE(std::string(toString(source)) + ", dilation " + std::to_string(dilation));
+            TextureAtlas reference;
+            for (int threads : {1, 2, 5}) {
+                AtlasOptions options;
+                options.pack.texelsPerUnit = 8;
+                options.pack.threads = threads;
+                options.bake.threads = threads;
+                options.bake.source = source;
+                options.bake.dilation = dilation;
+                const TextureAtlas atlas = buildTextureAtlas(mesh.view(), options);
+                if (threads == 1) {
+                    reference = atlas;
+                    continue;
+                }
+                EXPECT_EQ(atlas.layout.wedgeUv, reference.layout.wedgeUv) << threads << " threads";
+                EXPECT_EQ(atlas.texture.rgba, reference.texture.rgba) << threads << " threads";
+            }
+        }
+    }
 }
 
 TEST(Bake, CrispColoursSurviveNearestAndBilinearSampling) {
