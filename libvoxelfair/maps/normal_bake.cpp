@@ -13,7 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <thread>
+#include <future>
 
 #include <glm/geometric.hpp>
 
@@ -81,33 +81,43 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
     out.width = width;
     out.height = height;
 
-    // The source's walk (its largest structure) on one thread, the rest on the other.
-    const auto sorted = std::make_unique<SortedSource>(source, width, height);
+    // Set-up as tasks the threads take in turn (the sorted source first: the walk, the source's
+    // bands and its UV grid wait for it); each builds its own structure.
+    std::unique_ptr<SortedSource> sorted;
     std::unique_ptr<UvFaceGrid> grid;
     std::unique_ptr<SurfaceWalk> walk;
     FaceBands bands, sourceBands;
     std::vector<uint8_t> state;
     {
-        auto walkPart = [&] {
-            walk = std::make_unique<SurfaceWalk>(source.positions, source.normals, sorted->triangles.data(),
-                                                 source.faceCount, source.vertexCount);
-            sourceBands = faceBands(sorted->mesh, width, height, kBandRows);
-        };
-        auto rest = [&] {
-            out.cornerTangents = targetTangents(target);
-            bands = faceBands(target, width, height, kBandRows);
-            grid = std::make_unique<UvFaceGrid>(sorted->mesh, width, height);
-            out.rgba.resize(texels * 4);
-            state.assign(texels, 0);
-        };
-        if (bandThreads(options.threads, 2) > 1) {
-            std::thread other(walkPart);
-            rest();
-            other.join();
-        } else {
-            walkPart();
-            rest();
-        }
+        std::promise<void> sortedDone;
+        const std::shared_future<void> sortedReady = sortedDone.get_future().share();
+        runBands(7, options.threads, [&](size_t task) {
+            switch (task) {
+            case 0:
+                sorted = std::make_unique<SortedSource>(source, width, height);
+                sortedDone.set_value();
+                break;
+            case 1: out.cornerTangents = targetTangents(target); break;
+            case 2:
+                sortedReady.wait();
+                walk = std::make_unique<SurfaceWalk>(source.positions, source.normals, sorted->triangles.data(),
+                                                     source.faceCount, source.vertexCount);
+                break;
+            case 3: out.rgba.resize(texels * 4); break;
+            case 4:
+                sortedReady.wait();
+                sourceBands = faceBands(sorted->mesh, width, height, kBandRows);
+                break;
+            case 5:
+                state.assign(texels, 0);
+                bands = faceBands(target, width, height, kBandRows);
+                break;
+            default:
+                sortedReady.wait();
+                grid = std::make_unique<UvFaceGrid>(sorted->mesh, width, height);
+                break;
+            }
+        });
     }
     const size_t bandCount = bands.start.size() - 1;
     std::vector<size_t> baked(bandCount, 0), flat(bandCount, 0);
