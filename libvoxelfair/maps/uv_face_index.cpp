@@ -82,18 +82,25 @@ FaceBands faceBands(const NormalBakeMesh &mesh, int width, int height, int bandR
                 out.faces[fill[b]++] = uint32_t(f);
     // Each band's faces from left to right (by their UV boxes' left texel, then index): a band
     // sweeps its rows once, its texels and the source faces under them stay in cache.
-    std::vector<uint64_t> keyed;
+    // A counting sort on the left texel, stable: faces of the same column stay in index order.
+    std::vector<uint32_t> column(size_t(width) + 2), sorted;
+    std::vector<uint32_t> left;
     for (size_t b = 0; b < bands; ++b) {
-        keyed.clear();
-        for (uint32_t i = out.start[b]; i < out.start[b + 1]; ++i) {
+        const uint32_t first = out.start[b], last = out.start[b + 1];
+        std::fill(column.begin(), column.end(), 0);
+        left.resize(last - first);
+        for (uint32_t i = first; i < last; ++i) {
             const glm::vec2 *uv = &mesh.wedgeUv[3 * size_t(out.faces[i])];
-            const float left = std::min({uv[0].x, uv[1].x, uv[2].x}) * float(width);
-            const uint64_t x = std::isfinite(left) ? uint64_t(std::clamp(left, 0.0f, float(width))) : 0;
-            keyed.push_back(x << 32 | out.faces[i]);
+            const float x = std::min({uv[0].x, uv[1].x, uv[2].x}) * float(width);
+            left[i - first] = std::isfinite(x) ? uint32_t(std::clamp(x, 0.0f, float(width))) : 0;
+            ++column[left[i - first] + 1];
         }
-        std::sort(keyed.begin(), keyed.end());
-        for (uint32_t i = out.start[b]; i < out.start[b + 1]; ++i)
-            out.faces[i] = uint32_t(keyed[i - out.start[b]]);
+        for (size_t c = 1; c < column.size(); ++c)
+            column[c] += column[c - 1];
+        sorted.resize(last - first);
+        for (uint32_t i = first; i < last; ++i)
+            sorted[column[left[i - first]]++] = out.faces[i];
+        std::copy(sorted.begin(), sorted.end(), out.faces.begin() + first);
     }
     return out;
 }
