@@ -52,6 +52,7 @@ bool rasterizeRange(const AtlasCharts &charts, size_t first, size_t end, double 
     // turns into a sliding minimum (maximum) of the extents over 2 * padding + 1 rows (columns).
     std::vector<int> rowLeft, rowRight, colBottom, colTop, grown;
     const int border = padding + 1;  // the footprint may reach one texel below its box
+    size_t spanCount = 0;            // spans are written into room made beforehand, then trimmed
     if (keepSpans) {  // room for every triangle's rows at once: growing the spans costs more than the rows
         double rows = 0;
         for (size_t c = first; c < end; ++c) {
@@ -62,7 +63,7 @@ bool rasterizeRange(const AtlasCharts &charts, size_t first, size_t end, double 
             }
         }
         if (rows < 1e9)
-            part.spans.reserve(3 * size_t(rows));
+            part.spans.resize(3 * size_t(rows));
     }
     for (size_t c = first; c < end; ++c) {
         ChartMask &m = masks[c];
@@ -81,9 +82,11 @@ bool rasterizeRange(const AtlasCharts &charts, size_t first, size_t end, double 
                 glm::dvec2(uv[0]) * m.scale + double(border), glm::dvec2(uv[1]) * m.scale + double(border),
                 glm::dvec2(uv[2]) * m.scale + double(border), kMaskMargin, w, h, [&](int y, int xl, int xr) {
                     if (keepSpans) {
-                        part.spans.push_back(int16_t(y));
-                        part.spans.push_back(int16_t(xl));
-                        part.spans.push_back(int16_t(xr));
+                        if (spanCount + 3 > part.spans.size())
+                            part.spans.resize(2 * part.spans.size() + 3);
+                        int16_t *at = part.spans.data() + spanCount;
+                        at[0] = int16_t(y), at[1] = int16_t(xl), at[2] = int16_t(xr);
+                        spanCount += 3;
                     }
                     rowLeft[size_t(y)] = std::min(rowLeft[size_t(y)], xl);
                     rowRight[size_t(y)] = std::max(rowRight[size_t(y)], xr);
@@ -114,12 +117,12 @@ bool rasterizeRange(const AtlasCharts &charts, size_t first, size_t end, double 
             return false;
         m.offset = glm::dvec2(border - x0, border - y0);
         if (keepSpans) {  // canvas -> mask texels
-            for (size_t k = part.spanEnd.empty() ? 0 : part.spanEnd.back(); k < part.spans.size(); k += 3) {
+            for (size_t k = part.spanEnd.empty() ? 0 : part.spanEnd.back(); k < spanCount; k += 3) {
                 part.spans[k] = int16_t(part.spans[k] - y0);
                 part.spans[k + 1] = int16_t(part.spans[k + 1] - x0);
                 part.spans[k + 2] = int16_t(part.spans[k + 2] - x0);
             }
-            part.spanEnd.push_back(part.spans.size());
+            part.spanEnd.push_back(spanCount);
         }
 
         m.profile = part.profiles.size();
@@ -149,6 +152,7 @@ bool rasterizeRange(const AtlasCharts &charts, size_t first, size_t end, double 
         part.totalRowTexels += size_t(extents(rowLeft, rowRight, y0, m.height, x0, m.width, left, right));
         extents(colBottom, colTop, x0, m.width, y0, m.height, bottom, top);
     }
+    part.spans.resize(spanCount);
     return true;
 }
 

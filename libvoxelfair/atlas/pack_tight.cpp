@@ -238,9 +238,7 @@ TightPacking packTight(const ChartMasks &masks, int side, int height, bool allow
             continue;
         }
         if (bitmaps && bitmaps->has(c)) {
-            const uint8_t *bits = bitmaps->of(c);
-            for (size_t k = 0; k < size_t(m.width) * size_t(m.height); ++k)
-                needed += bits[k];
+            needed += int64_t(bitmaps->setBlocks[c]);
             continue;
         }
         const int16_t *l = m.rowLeft(masks.profiles), *r = m.rowRight(masks.profiles);
