@@ -1,6 +1,7 @@
 // Tangent-space normal map baking through the shared atlas; the contract is in normal_bake.h.
 #include "maps/normal_bake.h"
 
+#include "atlas/edge_adjacency.h"
 #include "atlas/texel_raster.h"
 #include "maps/mikktspace.h"
 #include "maps/parallel_bands.h"
@@ -98,11 +99,23 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
                 sortedDone.set_value();
                 break;
             case 1: out.cornerTangents = targetTangents(target); break;
-            case 2:
+            case 2: {
+                // The adjacency of the source in its own order (its vertices' order, near in
+                // memory: twice as fast as in the atlas' order), renumbered.
+                const std::vector<uint32_t> original =
+                    buildEdgeAdjacency(source.triangles, source.faceCount, source.vertexCount).opposite;
                 sortedReady.wait();
+                std::vector<uint32_t> opposite(original.size());
+                const uint32_t *const to = sorted->sortedFace.data();
+                for (size_t f = 0; f < source.faceCount; ++f)
+                    for (size_t k = 0; k < 3; ++k) {
+                        const uint32_t h = original[3 * f + k];
+                        opposite[3 * size_t(to[f]) + k] = h == kNoOpposite ? kNoOpposite : 3 * to[h / 3] + h % 3;
+                    }
                 walk = std::make_unique<SurfaceWalk>(source.positions, source.normals, sorted->triangles.data(),
-                                                     source.faceCount, source.vertexCount);
+                                                     source.faceCount, source.vertexCount, opposite.data());
                 break;
+            }
             case 3: out.rgba.resize(texels * 4); break;
             case 4:
                 sortedReady.wait();

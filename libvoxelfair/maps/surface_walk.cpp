@@ -10,7 +10,7 @@
 namespace voxelfair {
 
 SurfaceWalk::SurfaceWalk(const glm::vec3 *positions, const glm::vec3 *normals, const uint32_t *triangles,
-                         size_t faceCount, size_t vertexCount)
+                         size_t faceCount, size_t vertexCount, const uint32_t *givenOpposite)
     : faces_(faceCount), cornerNormals_(3 * faceCount, glm::vec3(0.0f)), positions_(positions), triangles_(triangles),
       vertexFaceStart_(vertexCount + 1, 0), vertexFaces_(3 * faceCount) {
     for (size_t c = 0; c < 3 * faceCount; ++c)
@@ -22,7 +22,10 @@ SurfaceWalk::SurfaceWalk(const glm::vec3 *positions, const glm::vec3 *normals, c
         for (size_t c = 0; c < 3 * faceCount; ++c)
             vertexFaces_[fill[triangles[c]]++] = uint32_t(c / 3);
     }
-    const std::vector<uint32_t> opposite = buildEdgeAdjacency(triangles, faceCount, vertexCount).opposite;
+    std::vector<uint32_t> built;
+    if (!givenOpposite)
+        built = buildEdgeAdjacency(triangles, faceCount, vertexCount).opposite;
+    const uint32_t *const opposite = givenOpposite ? givenOpposite : built.data();
     for (size_t f = 0; f < faceCount; ++f) {
         const glm::vec3 a = positions[triangles[3 * f]], e1 = positions[triangles[3 * f + 1]] - a,
                         e2 = positions[triangles[3 * f + 2]] - a;

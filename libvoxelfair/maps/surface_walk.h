@@ -28,9 +28,12 @@ namespace voxelfair {
 
 class SurfaceWalk {
 public:
-    // `normals` (per vertex, may be null) are kept per face corner for normalAt().
+    // `normals` (per vertex, may be null) are kept per face corner for normalAt(). `opposite`, when
+    // given, is the triangles' half-edge adjacency as buildEdgeAdjacency (atlas/edge_adjacency.h)
+    // finds it (3 f + i -> the other face's half-edge, kNoOpposite on borders and non-manifold
+    // edges); else it is built here.
     SurfaceWalk(const glm::vec3 *positions, const glm::vec3 *normals, const uint32_t *triangles, size_t faceCount,
-                size_t vertexCount);
+                size_t vertexCount, const uint32_t *opposite = nullptr);
 
     struct Hit {
         uint32_t face;

@@ -118,8 +118,10 @@ SortedSource::SortedSource(const NormalBakeMesh &source, int width, int height)
     for (size_t c = 1; c < cellStart.size(); ++c)
         cellStart[c] += cellStart[c - 1];
     std::vector<uint32_t> fill(cellStart.begin(), cellStart.end() - 1);
+    sortedFace.resize(source.faceCount);
     for (size_t f = 0; f < source.faceCount; ++f) {
         const size_t to = fill[cellOf[f]]++;
+        sortedFace[f] = uint32_t(to);
         for (int k = 0; k < 3; ++k) {
             triangles[3 * to + size_t(k)] = source.triangles[3 * f + size_t(k)];
             wedgeUv[3 * to + size_t(k)] = source.wedgeUv[3 * f + size_t(k)];

@@ -117,7 +117,8 @@ struct SortedSource {
     std::vector<uint32_t> triangles;
     std::vector<glm::vec2> wedgeUv;
     int cellsX = 0, cellsY = 0;
-    std::vector<uint32_t> cellStart;  // the faces of cell c: [cellStart[c], cellStart[c + 1])
+    std::vector<uint32_t> cellStart;   // the faces of cell c: [cellStart[c], cellStart[c + 1])
+    std::vector<uint32_t> sortedFace;  // the source's face f is face sortedFace[f] here
     NormalBakeMesh mesh;
 
     SortedSource(const NormalBakeMesh &source, int width, int height);
