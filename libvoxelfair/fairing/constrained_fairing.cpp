@@ -66,7 +66,7 @@ ConstrainedFairingReport fairConstrained(const MutablePolygonMesh &mesh, const u
                                          const ConstrainedFairingOptions &options) {
     ConstrainedFairingReport report;
     if (options.passes < 0 || options.normalLevels < 0 || options.normalLevels > 8 || options.positionSweeps < 0 ||
-        options.stepReach < 1 || options.featureReach < 0 || options.driftRounds < 0 ||
+        options.stepReach < 1 || options.featureReach < 0 || options.cornerFlats < 0 || options.driftRounds < 0 ||
         options.featureFitIterations < 0 ||
         !(options.featureSpreadDegrees >= 0.0f && options.featureSpreadDegrees < 180.0f) ||
         !(options.featureFlatDegrees >= 0.0f && options.featureFlatDegrees < 90.0f) ||
@@ -75,7 +75,7 @@ ConstrainedFairingReport fairConstrained(const MutablePolygonMesh &mesh, const u
         !std::isfinite(options.voxelSize) || options.voxelSize < 0.0f)
         throw OptionError("constrained fairing: passes, positionSweeps, driftRounds >= 0, normalLevels in [0, 8], "
                           "featureFitIterations >= 0, featureSpread in [0, 180), featureFlat in [0, 90), stepReach >= "
-                          "1, featureReach >= 0, "
+                          "1, featureReach >= 0, cornerFlats >= 0, "
                           "cellHalfWidth > 0, creaseAngle in (0, 180), voxelSize "
                           "finite and >= 0");
     if (const FairingStatus status = checkFairingInput(mesh, options.passes, &report.message);

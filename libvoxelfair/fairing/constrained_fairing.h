@@ -7,7 +7,9 @@
 //    Otherwise it is a genuine edge (box edges, cylinder caps, 1-voxel plates and rods), unless
 //    the walks on both of its sides end, within featureReach quads, on staircase steps (a lone
 //    straight edge in a rounded part), or it is an isolated single edge (its two ends touch no
-//    other genuine edge). Boundary and non-manifold edges are always genuine. The idea of
+//    other genuine edge). Boundary and non-manifold edges are always genuine. A crease with a
+//    single 1-2 quad notch between long flats (a box turned a few degrees) is marked so that
+//    step 2's far levels do not cross it (a 7-quad face took its corners' normals and bowed). The idea of
 //    separating staircase from feature edges is from Moench, Adler and Preim, "Staircase-aware
 //    smoothing of medical surface meshes" (VCBM 2010); the riser test is ours.
 // 2. Normals. Polygon normals are averaged with their neighbours across edges, never across a
@@ -99,6 +101,11 @@ struct ConstrainedFairingOptions {
     // small circles) and how far a genuine edge looks for the edges at the ends of its faces.
     int stepReach = 2;
     int featureReach = 8;
+    // Step 1: a crease with a single notch (riser and tread each within stepReach) on one side
+    // and flats of at least this many quads beyond the notch and on its other side (one of them 2
+    // longer) is a corner of a box turned a few degrees, which step 2's far levels do not cross
+    // (constrained/edge_classes.cpp); 0 turns it off.
+    int cornerFlats = 5;
     // Size of a voxel in the positions' units. 0 = detectVoxelSize().
     float voxelSize = 0.0f;
 };

@@ -49,7 +49,9 @@ enum class VertexKind : uint8_t {
 inline bool isFree(VertexKind kind) { return kind <= VertexKind::FreeIrregular; }
 
 // Step 1's verdict on the edge of each corner (both corners of a manifold edge agree).
-enum EdgeFlag : uint8_t { kConvex = 1, kConcave = 2, kSharp = 4 };
+// kNotch: a crease of a turned box's corner notch (edge_classes.cpp), which step 2's far levels
+// do not cross (normal_filter.cpp).
+enum EdgeFlag : uint8_t { kConvex = 1, kConcave = 2, kSharp = 4, kNotch = 8 };
 constexpr uint8_t kCrease = kConvex | kConcave;
 
 // The vertex-index tiles the sweeps are ordered in (see sweep_layout.cpp).

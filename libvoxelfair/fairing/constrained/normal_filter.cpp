@@ -13,7 +13,9 @@
 // straight across c's edge enters the polygon 2^i quads away; kNone when a sharp edge, a hole or
 // a non-quad is in the way (at level 0: the twin across smooth edges, any polygon). Level i + 1
 // is level i taken twice (pointer doubling); the top level, used only by the first pass, is
-// looked up through the level below (FairingState::doubled).
+// looked up through the level below (FairingState::doubled). From level 1 on, no walk crosses an
+// edge flagged kNotch (a turned box's corner, edge_classes.cpp): the faces beside it average their
+// normals with the corner's only at level 0, one quad deep, and stay flat.
 //
 // Contract (filterNormals; reads normal, the level tables; fills normal, vertexNormal): `levels`
 // Jacobi rounds, each normal[p] <- normalize(normal[p] + the four level-i neighbours' normals, a
@@ -36,11 +38,16 @@ VOXELFAIR_NOINLINE void buildLevels(FairingState<kQuads> &s) {
                 twin[twin[c]] = kNone;
                 twin[c] = kNone;
             }
+    const uint8_t *const flags = s.edgeFlags;
     for (int level = 1; level < s.storedLevels; ++level) {
         const uint32_t *below = s.levelTable(level - 1);
         uint32_t *table = twin + size_t(level) * s.cornerCount;
         for (uint32_t c = 0; c < s.cornerCount; ++c)
             table[c] = s.doubled(below, c);
+        if (level == 1)  // no walk 2 quads or more across a notch crease (and so none at the levels above)
+            for (uint32_t c = 0; c < s.cornerCount; ++c)
+                if (table[c] != kNone && ((flags[c] & kNotch) || (flags[s.k.oppositeCorner(below[c])] & kNotch)))
+                    table[c] = kNone;
     }
 }
 
