@@ -32,7 +32,7 @@ void run(constrained::FairingState<kQuads> &s) {
     buildCorners(s);
     std::fill(s.edgeFlags, s.edgeFlags + s.cornerCount, uint8_t(0));
     classifyEdges(s.k, s.twin, s.input, s.normal, s.options, s.V, s.creases, s.creaseCount, s.edgeFlags,
-                  s.sharpBoundary, s.sharpCreases, s.report);
+                  s.sharpBoundary, s.sharpCreases, s.notches, s.report);
     findVertexKinds(s);
     buildLevels(s);
     buildSlots(s);

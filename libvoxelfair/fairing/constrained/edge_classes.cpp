@@ -44,7 +44,7 @@ VOXELFAIR_NOINLINE void classifyEdges(const Polygons<kQuads> &k, const uint32_t 
                                       const glm::vec3 *unitNormal, const ConstrainedFairingOptions &options,
                                       size_t vertexCount, const uint32_t *creases, size_t creaseCount, uint8_t *flags,
                                       std::vector<uint32_t> &sharpBoundary, std::vector<uint32_t> &sharpCreases,
-                                      ConstrainedFairingReport &report) {
+                                      std::vector<uint32_t> &notches, ConstrainedFairingReport &report) {
     // Convex or concave: the far end of the other polygon's next edge lies below this polygon's
     // plane, or not.
     for (const uint32_t *crease = creases; crease != creases + creaseCount; ++crease) {
@@ -88,7 +88,23 @@ VOXELFAIR_NOINLINE void classifyEdges(const Polygons<kQuads> &k, const uint32_t 
     auto notchCorner = [&](uint32_t c, uint32_t t) {
         if (flats <= 0)
             return false;
-        for (const auto &[in, out] : {std::pair{c, t}, std::pair{t, c}}) {
+        // (Cheap first: most creases have another one quad across on both sides.)
+        const bool flat[2] = {!k.inQuad(c) || !(flags[k.oppositeCorner(c)] & kCrease),
+                              !k.inQuad(t) || !(flags[k.oppositeCorner(t)] & kCrease)};
+        if (!flat[0] && !flat[1])
+            return false;
+        // A flat's length as far as it matters: flats + 2 when no crease ends it within flats + 1.
+        auto length = [&](uint32_t from) {
+            const WalkEnd end = walk(from, flats + 1);
+            return end.corner == kNone ? flats + 2 : end.steps;
+        };
+        for (int side = 0; side < 2; ++side) {
+            const uint32_t in = side == 0 ? c : t, out = side == 0 ? t : c;
+            if (!flat[1 - side])
+                continue;
+            const int outside = length(out);
+            if (outside <= flats - 1)
+                continue;
             const WalkEnd riser = walk(in, options.stepReach);
             if (riser.corner == kNone || turn(riser.corner) == turn(c) || twin[riser.corner] == kNone)
                 continue;
@@ -97,9 +113,8 @@ VOXELFAIR_NOINLINE void classifyEdges(const Polygons<kQuads> &k, const uint32_t 
                 continue;
             // (One flat 2 quads longer: a circle of radius 4 can show a single notch between
             // flats of 5 and 6.)
-            const uint32_t beyond = twin[tread.corner];
-            if (walk(beyond, flats - 1).corner == kNone && walk(out, flats - 1).corner == kNone &&
-                (walk(beyond, flats + 1).corner == kNone || walk(out, flats + 1).corner == kNone))
+            const int beyond = length(twin[tread.corner]);
+            if (beyond >= flats && std::max(beyond, outside) >= flats + 2)
                 return true;
         }
         return false;
@@ -115,6 +130,7 @@ VOXELFAIR_NOINLINE void classifyEdges(const Polygons<kQuads> &k, const uint32_t 
         if (notchCorner(c, t)) {
             flags[c] |= kNotch;
             flags[t] |= kNotch;
+            notches.push_back(c);
         }
         // Most creases of a staircase turn back one quad away on either side: a step, whatever
         // the walks find further (the nearest crease decides below).
@@ -229,7 +245,8 @@ VOXELFAIR_NOINLINE void findVertexKinds(FairingState<kQuads> &s) {
 #define VOXELFAIR_INSTANTIATE(kQuads)                                                                                  \
     template void classifyEdges(const Polygons<kQuads> &, const uint32_t *, const glm::vec3 *, const glm::vec3 *,      \
                                 const ConstrainedFairingOptions &, size_t, const uint32_t *, size_t, uint8_t *,        \
-                                std::vector<uint32_t> &, std::vector<uint32_t> &, ConstrainedFairingReport &);         \
+                                std::vector<uint32_t> &, std::vector<uint32_t> &, std::vector<uint32_t> &,             \
+                                ConstrainedFairingReport &);                                                           \
     template void findVertexKinds(FairingState<kQuads> &);
 VOXELFAIR_INSTANTIATE(true)
 VOXELFAIR_INSTANTIATE(false)

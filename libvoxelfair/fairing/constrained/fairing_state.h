@@ -159,7 +159,8 @@ struct FairingState {
     uint32_t *creases = nullptr;  // one corner per edge (the lower), creaseCount of them
     size_t creaseCount = 0;
     std::vector<uint32_t> sharpBoundary, sharpCreases, lineVertices, linePolygonStart, linePolygons;
-    uint32_t *rank = nullptr;  // vertex -> slot (first the waves)
+    std::vector<uint32_t> notches;  // one corner of each kNotch edge (edge_classes.cpp)
+    uint32_t *rank = nullptr;       // vertex -> slot (first the waves)
 
     // Step 3, by slot (see sweep_layout.cpp).
     size_t freeSlots = 0;                  // slots of free vertices (and empty ones): whole blocks
@@ -189,7 +190,8 @@ template <bool kQuads>
 void classifyEdges(const Polygons<kQuads> &k, const uint32_t *twin, const glm::vec3 *positions,
                    const glm::vec3 *unitNormal, const ConstrainedFairingOptions &options, size_t vertexCount,
                    const uint32_t *creases, size_t creaseCount, uint8_t *flags, std::vector<uint32_t> &sharpBoundary,
-                   std::vector<uint32_t> &sharpCreases, ConstrainedFairingReport &report);
+                   std::vector<uint32_t> &sharpCreases, std::vector<uint32_t> &notches,
+                   ConstrainedFairingReport &report);
 template <bool kQuads>
 void findVertexKinds(FairingState<kQuads> &s);
 template <bool kQuads>

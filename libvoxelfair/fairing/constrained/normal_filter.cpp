@@ -38,16 +38,24 @@ VOXELFAIR_NOINLINE void buildLevels(FairingState<kQuads> &s) {
                 twin[twin[c]] = kNone;
                 twin[c] = kNone;
             }
-    const uint8_t *const flags = s.edgeFlags;
     for (int level = 1; level < s.storedLevels; ++level) {
         const uint32_t *below = s.levelTable(level - 1);
         uint32_t *table = twin + size_t(level) * s.cornerCount;
         for (uint32_t c = 0; c < s.cornerCount; ++c)
             table[c] = s.doubled(below, c);
-        if (level == 1)  // no walk 2 quads or more across a notch crease (and so none at the levels above)
-            for (uint32_t c = 0; c < s.cornerCount; ++c)
-                if (table[c] != kNone && ((flags[c] & kNotch) || (flags[s.k.oppositeCorner(below[c])] & kNotch)))
-                    table[c] = kNone;
+        if (level != 1)
+            continue;
+        // No walk of 2 quads (and so none further) across a notch edge: not from either of its
+        // corners n, nor from the corner whose level-0 walk ends across from n (level 0 is its own
+        // inverse), which would cross n's edge second.
+        for (uint32_t c : s.notches)
+            for (uint32_t n : {c, twin[c]}) {
+                if (n == kNone)
+                    continue;
+                table[n] = kNone;
+                if (s.k.inQuad(n) && below[s.k.oppositeCorner(n)] != kNone)
+                    table[below[s.k.oppositeCorner(n)]] = kNone;
+            }
     }
 }
 
