@@ -1,7 +1,7 @@
 #include "atlas/bake.h"
 
 #include "atlas/texel_raster.h"
-#include "maps/parallel_bands.h"
+#include "base/parallel_bands.h"
 #include "base/error.h"
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 #include "atlas/chart_bitmaps.h"
 
-#include "maps/parallel_bands.h"
+#include "base/parallel_bands.h"
 
 #include <algorithm>
 

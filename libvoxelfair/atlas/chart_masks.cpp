@@ -1,7 +1,7 @@
 #include "atlas/chart_masks.h"
 
 #include "atlas/texel_raster.h"
-#include "maps/parallel_bands.h"
+#include "base/parallel_bands.h"
 
 #include <algorithm>
 #include <cmath>

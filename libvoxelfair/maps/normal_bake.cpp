@@ -4,7 +4,7 @@
 #include "atlas/edge_adjacency.h"
 #include "atlas/texel_raster.h"
 #include "maps/mikktspace.h"
-#include "maps/parallel_bands.h"
+#include "base/parallel_bands.h"
 #include "maps/surface_walk.h"
 #include "maps/texel_dilation.h"
 #include "maps/texel_frames.h"

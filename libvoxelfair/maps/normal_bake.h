@@ -23,7 +23,7 @@
 // the blocks are filled (the gutter, NormalBakeOptions). Texels no target
 // triangle touches keep the flat normal (0, 0, 1).
 //
-// The texture is split into bands of texel rows baked on `threads` threads (parallel_bands.h);
+// The texture is split into bands of texel rows baked on `threads` threads (base/parallel_bands.h);
 // each band walks from its own starting points, so the map is the same for any thread count.
 // Within a band each target triangle's texels are gathered (source normals found one by one),
 // then their frames are solved in one branch-free loop the compiler vectorises.

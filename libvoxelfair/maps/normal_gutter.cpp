@@ -1,7 +1,7 @@
 // The gutter of a baked normal map; the contract is in normal_gutter.h.
 #include "maps/normal_gutter.h"
 
-#include "maps/parallel_bands.h"
+#include "base/parallel_bands.h"
 #include "maps/texel_dilation.h"
 
 #include <algorithm>

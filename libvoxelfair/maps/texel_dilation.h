@@ -9,11 +9,11 @@
 //                                          false leaves it unpainted. It writes texel (x, y) only.
 // Texels painted in one ring are marked only after the whole ring, so every texel of a ring
 // reads the previous rings alone, whatever the visiting order. Rows are split into bands run on
-// `threads` threads (parallel_bands.h); each band touches the state of its own rows alone while
+// `threads` threads (base/parallel_bands.h); each band touches the state of its own rows alone while
 // others run, so the result does not depend on the thread count.
 #pragma once
 
-#include "maps/parallel_bands.h"
+#include "base/parallel_bands.h"
 
 #include <algorithm>
 #include <cstdint>
