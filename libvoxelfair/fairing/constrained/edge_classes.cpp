@@ -11,7 +11,7 @@
 // is an isolated single edge (its two ends touch no other genuine edge). Counts into the report.
 // A crease with a single notch on one side (a riser and a tread, each within stepReach quads) and
 // flats of at least options.cornerFlats quads beyond the notch and on its other side, one of them
-// 2 quads longer, gets kNotch on both corners (whatever else it is): step 2's far levels do not
+// 2 quads longer, is a notch edge, listed in `notches` (whatever else it is): step 2's far levels do not
 // cross it (normal_filter.cpp).
 //
 // Why the notch rule (ours): a box turned a few degrees voxelizes each face as one long tread and
@@ -127,11 +127,8 @@ VOXELFAIR_NOINLINE void classifyEdges(const Polygons<kQuads> &k, const uint32_t 
     std::vector<Candidate> candidates;
     for (const uint32_t *crease = creases; crease != creases + creaseCount; ++crease) {
         const uint32_t c = *crease, t = twin[c];
-        if (notchCorner(c, t)) {
-            flags[c] |= kNotch;
-            flags[t] |= kNotch;
+        if (notchCorner(c, t))
             notches.push_back(c);
-        }
         // Most creases of a staircase turn back one quad away on either side: a step, whatever
         // the walks find further (the nearest crease decides below).
         if (k.inQuad(c) && (flags[k.oppositeCorner(c)] & kCrease) && turn(k.oppositeCorner(c)) != turn(c))

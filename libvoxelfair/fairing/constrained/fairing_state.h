@@ -49,9 +49,7 @@ enum class VertexKind : uint8_t {
 inline bool isFree(VertexKind kind) { return kind <= VertexKind::FreeIrregular; }
 
 // Step 1's verdict on the edge of each corner (both corners of a manifold edge agree).
-// kNotch: a crease of a turned box's corner notch (edge_classes.cpp), which step 2's far levels
-// do not cross (normal_filter.cpp).
-enum EdgeFlag : uint8_t { kConvex = 1, kConcave = 2, kSharp = 4, kNotch = 8 };
+enum EdgeFlag : uint8_t { kConvex = 1, kConcave = 2, kSharp = 4 };
 constexpr uint8_t kCrease = kConvex | kConcave;
 
 // The vertex-index tiles the sweeps are ordered in (see sweep_layout.cpp).
@@ -159,8 +157,9 @@ struct FairingState {
     uint32_t *creases = nullptr;  // one corner per edge (the lower), creaseCount of them
     size_t creaseCount = 0;
     std::vector<uint32_t> sharpBoundary, sharpCreases, lineVertices, linePolygonStart, linePolygons;
-    std::vector<uint32_t> notches;  // one corner of each kNotch edge (edge_classes.cpp)
-    uint32_t *rank = nullptr;       // vertex -> slot (first the waves)
+    // One corner of each notch edge (edge_classes.cpp), which step 2's far levels do not cross.
+    std::vector<uint32_t> notches;
+    uint32_t *rank = nullptr;  // vertex -> slot (first the waves)
 
     // Step 3, by slot (see sweep_layout.cpp).
     size_t freeSlots = 0;                  // slots of free vertices (and empty ones): whole blocks

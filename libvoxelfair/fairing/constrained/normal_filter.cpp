@@ -14,7 +14,7 @@
 // a non-quad is in the way (at level 0: the twin across smooth edges, any polygon). Level i + 1
 // is level i taken twice (pointer doubling); the top level, used only by the first pass, is
 // looked up through the level below (FairingState::doubled). From level 1 on, no walk crosses an
-// edge flagged kNotch (a turned box's corner, edge_classes.cpp): the faces beside it average their
+// notch edge (FairingState::notches: a turned box's corner, edge_classes.cpp): the faces beside it average their
 // normals with the corner's only at level 0, one quad deep, and stay flat.
 //
 // Contract (filterNormals; reads normal, the level tables; fills normal, vertexNormal): `levels`
