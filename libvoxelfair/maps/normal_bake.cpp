@@ -197,24 +197,24 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
             // The source normal at texel (x, y) with weights l1, l2; false when no source face is near.
             auto sourceNormal = [&](int x, int y, float l1, float l2, glm::vec3 &n) {
                 const glm::vec3 p = tp[0] + l1 * e1 + l2 * e2;
-
+                const float l0 = 1.0f - l1 - l2;
+                const glm::vec3 facing = l0 * tn[0] + l1 * tn[1] + l2 * tn[2];
                 glm::vec3 weights;
-                if (hitFace != UINT32_MAX && walk->holds(p, hitFace, weights)) {
+                if (hitFace != UINT32_MAX && walk->holds(p, hitFace, facing, weights)) {
                     n = walk->normalAt(hitFace, weights);
                     return true;
                 }
                 const uint32_t start = under[size_t(y - r0) * size_t(width) + size_t(x)];
-                if (start != UINT32_MAX && start != hitFace && walk->holds(p, start, weights)) {
+                if (start != UINT32_MAX && start != hitFace && walk->holds(p, start, facing, weights)) {
                     hitFace = start;
                     n = walk->normalAt(hitFace, weights);
                     return true;
                 }
                 uint32_t from = hitFace != UINT32_MAX ? hitFace : start;
-                const float l0 = 1.0f - l1 - l2;
                 if (from == UINT32_MAX &&
                     (from = grid->find(double(l0) * q[0] + double(l1) * q[1] + double(l2) * q[2])) == UINT32_MAX)
                     return false;
-                const SurfaceWalk::Hit hit = walk->project(p, from, l0 * tn[0] + l1 * tn[1] + l2 * tn[2], 64);
+                const SurfaceWalk::Hit hit = walk->project(p, from, facing, 64);
                 hitFace = hit.face;
                 n = walk->normalAt(hit);
                 return true;

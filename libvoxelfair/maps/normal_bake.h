@@ -7,8 +7,9 @@
 // same UV. The source triangle under a target texel's UV is where the search for its source
 // point starts; the point itself is found by geometry: a walk over the source's triangles
 // (surface_walk.h: the projection onto the local sheet, or the closest facing point where the
-// target is well off the source). Where the projection falls inside the triangle under the UV
-// (most texels) that is the answer at once; else, if the previous texel of the row started from
+// target is well off the source or the sheet faces away from the target's shading normal, the
+// far side of a fold). Where the projection falls inside the triangle under the UV, facing the
+// texel's way (most texels), that is the answer at once; else, if the previous texel of the row started from
 // the same triangle and its answer holds the projection, that answer; else the walk. The
 // source's interpolated vertex normal n there is what the texel encodes. The target triangle under the texel gives the shading frame a glTF / Blender /
 // MikkTSpace pixel shader rebuilds there: N and T interpolated from the target's vertex normals

@@ -4,6 +4,7 @@
 #include "atlas/edge_adjacency.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <glm/geometric.hpp>
 
@@ -104,7 +105,8 @@ SurfaceWalk::Hit SurfaceWalk::closestAround(const glm::vec3 &p, uint32_t face, c
     };
     Hit best{face, closest(face)};
     glm::vec3 q = point(face, best.weights);
-    float bestDistance = glm::dot(q - p, q - p);
+    // The last triangle is the answer only if it faces the same way or none around does.
+    float bestDistance = glm::dot(faces_[face].normal, facing) > 0.0f ? glm::dot(q - p, q - p) : INFINITY;
     // Faces already measured (a face shares the fans of two or three corners, and rounds overlap)
     // are not measured again: each lost to a best distance no larger than today's.
     constexpr int kSeen = 64;

@@ -12,9 +12,12 @@
 //
 // Where the walk ends outside its last triangle (beyond a ridge or a border), or inside it but
 // farther from its plane than a quarter of its longest edge (the point is well off the source, as
-// a heavily decimated surface often is, where the projection and the closest point part), the answer is refined to the closest point
-// (Ericson, "Real-Time Collision Detection" 5.1.5) among the triangles around that triangle's
-// corners that face the same way as `facing`, repeated from the new triangle while it improves.
+// a heavily decimated surface often is, where the projection and the closest point part), or on a
+// triangle facing away from `facing` (the decimated surface's shading normal there: the far side
+// of a fold or of a thin plate, never what the texel shows), the answer is refined to the closest
+// point (Ericson, "Real-Time Collision Detection" 5.1.5) among the triangles around that
+// triangle's corners that face the same way as `facing`, repeated from the new triangle while it
+// improves (the last triangle itself only if it faces that way too).
 #pragma once
 
 #include <cstddef>
@@ -39,14 +42,16 @@ public:
         uint32_t face;
         glm::vec3 weights;  // barycentric, >= 0, summing to 1
     };
-    // True when p's projection onto face `face`'s plane falls inside it, near the plane (the
-    // walk's answer when it starts there); w gets its weights either way. The bakers' fast path.
-    bool holds(const glm::vec3 &p, uint32_t face, glm::vec3 &w) const {
+    // True when p's projection onto face `face`'s plane falls inside it, near the plane, and the
+    // face faces the way of `facing` (a positive dot with its normal): the walk's answer when it
+    // starts there; w gets its weights either way. The bakers' fast path.
+    bool holds(const glm::vec3 &p, uint32_t face, const glm::vec3 &facing, glm::vec3 &w) const {
         const Face &f = faces_[face];
         const glm::vec3 d = p - f.origin;
         const float w1 = glm::dot(d, f.dual1), w2 = glm::dot(d, f.dual2), height = glm::dot(d, f.normal);
         w = glm::vec3(1.0f - w1 - w2, w1, w2);
-        return (w.x >= 0.0f) & (w1 >= 0.0f) & (w2 >= 0.0f) & (height * height <= f.nearPlane);
+        return (w.x >= 0.0f) & (w1 >= 0.0f) & (w2 >= 0.0f) & (height * height <= f.nearPlane) &
+               (glm::dot(f.normal, facing) > 0.0f);
     }
     // `start` must be a face index; at most `maxSteps` moves. Inline: the bakers call it per texel.
     Hit project(const glm::vec3 &p, uint32_t start, const glm::vec3 &facing, int maxSteps = 16) const {
@@ -66,7 +71,7 @@ public:
                 // Inside, and near the plane compared with the triangle's size: the projection is
                 // the closest point, or close to it.
                 const float height = glm::dot(d, f.normal);
-                if (height * height <= f.nearPlane)
+                if (height * height <= f.nearPlane && glm::dot(f.normal, facing) > 0.0f)
                     return {face, w};
                 break;
             }
