@@ -52,8 +52,11 @@ bool rasterizeRange(const AtlasCharts &charts, size_t first, size_t end, double 
     // turns into a sliding minimum (maximum) of the extents over 2 * padding + 1 rows (columns).
     std::vector<int> rowLeft, rowRight, colBottom, colTop, grown;
     const int border = padding + 1;  // the footprint may reach one texel below its box
-    size_t spanCount = 0;            // spans are written into room made beforehand, then trimmed
-    if (keepSpans) {  // room for every triangle's rows at once: growing the spans costs more than the rows
+    // A chart's box starts at its UV origin: placed on a texel boundary, the generous margin would
+    // reach the texel row and column before it. Just past the margin it starts in its first texel.
+    const double origin = border + 2 * kMaskMargin;
+    size_t spanCount = 0;  // spans are written into room made beforehand, then trimmed
+    if (keepSpans) {       // room for every triangle's rows at once: growing the spans costs more than the rows
         double rows = 0;
         for (size_t c = first; c < end; ++c) {
             const double scale = charts.isDegenerate(c) ? 1.0 : texelsPerUnit;
@@ -78,24 +81,24 @@ bool rasterizeRange(const AtlasCharts &charts, size_t first, size_t end, double 
         colTop.assign(size_t(w), -kNone);
         for (size_t i = charts.chartFirstFace[c]; i < charts.chartFirstFace[c + 1]; ++i) {
             const glm::vec2 *uv = &charts.wedgeUv[3 * i];
-            rasterConservativeSpans(
-                glm::dvec2(uv[0]) * m.scale + double(border), glm::dvec2(uv[1]) * m.scale + double(border),
-                glm::dvec2(uv[2]) * m.scale + double(border), kMaskMargin, w, h, [&](int y, int xl, int xr) {
-                    if (keepSpans) {
-                        if (spanCount + 3 > part.spans.size())
-                            part.spans.resize(2 * part.spans.size() + 3);
-                        int16_t *at = part.spans.data() + spanCount;
-                        at[0] = int16_t(y), at[1] = int16_t(xl), at[2] = int16_t(xr);
-                        spanCount += 3;
-                    }
-                    rowLeft[size_t(y)] = std::min(rowLeft[size_t(y)], xl);
-                    rowRight[size_t(y)] = std::max(rowRight[size_t(y)], xr);
-                    int *bottom = colBottom.data(), *top = colTop.data();
-                    for (int x = xl; x <= xr; ++x) {
-                        bottom[x] = std::min(bottom[x], y);
-                        top[x] = std::max(top[x], y);
-                    }
-                });
+            rasterConservativeSpans(glm::dvec2(uv[0]) * m.scale + origin, glm::dvec2(uv[1]) * m.scale + origin,
+                                    glm::dvec2(uv[2]) * m.scale + origin, kMaskMargin, w, h,
+                                    [&](int y, int xl, int xr) {
+                                        if (keepSpans) {
+                                            if (spanCount + 3 > part.spans.size())
+                                                part.spans.resize(2 * part.spans.size() + 3);
+                                            int16_t *at = part.spans.data() + spanCount;
+                                            at[0] = int16_t(y), at[1] = int16_t(xl), at[2] = int16_t(xr);
+                                            spanCount += 3;
+                                        }
+                                        rowLeft[size_t(y)] = std::min(rowLeft[size_t(y)], xl);
+                                        rowRight[size_t(y)] = std::max(rowRight[size_t(y)], xr);
+                                        int *bottom = colBottom.data(), *top = colTop.data();
+                                        for (int x = xl; x <= xr; ++x) {
+                                            bottom[x] = std::min(bottom[x], y);
+                                            top[x] = std::max(top[x], y);
+                                        }
+                                    });
         }
         int bx0 = w, bx1 = -1, by0 = h, by1 = -1;  // the footprint's box
         for (int y = 0; y < h; ++y)
@@ -115,7 +118,7 @@ bool rasterizeRange(const AtlasCharts &charts, size_t first, size_t end, double 
         m.height = y1 - y0 + 1;
         if (m.width > maxSide || m.height > maxSide)
             return false;
-        m.offset = glm::dvec2(border - x0, border - y0);
+        m.offset = glm::dvec2(origin - x0, origin - y0);
         if (keepSpans) {  // canvas -> mask texels
             for (size_t k = part.spanEnd.empty() ? 0 : part.spanEnd.back(); k < spanCount; k += 3) {
                 part.spans[k] = int16_t(part.spans[k] - y0);

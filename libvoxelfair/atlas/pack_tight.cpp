@@ -228,12 +228,16 @@ TightPacking packTight(const ChartMasks &masks, int side, int height, bool allow
     // size scans the atlas at most once in all, which keeps thousands of micro charts cheap.
     const int64_t shapedArea = int64_t(side) * height / 1024;
     std::unordered_map<uint32_t, std::pair<int, int>> boxCursor;  // (width << 16 | height) -> (y, x)
+    // Small charts with a bitmap go in by their shape, their search resumed the same way per
+    // turned size (a heuristic for them: another shape of that size may fit lower).
+    std::unordered_map<uint64_t, std::pair<int, int>> shapeCursor;
+    auto boxed = [&](uint32_t c) { return area(c) < shapedArea && !(bitmaps && bitmaps->has(c)); };
 
     // The room the charts will take (boxes, or row spans) cannot exceed the atlas.
     int64_t needed = 0;
     for (uint32_t c = 0; c < charts; ++c) {
         const ChartMask &m = masks.charts[c];
-        if (area(c) < shapedArea) {
+        if (boxed(c)) {
             needed += area(c);
             continue;
         }
@@ -252,7 +256,7 @@ TightPacking packTight(const ChartMasks &masks, int side, int height, bool allow
     FreeRuns runs(side, height);
     Shape shape, best;
     for (uint32_t c : order) {
-        const bool box = area(c) < shapedArea;
+        const bool box = boxed(c), small = area(c) < shapedArea;
         int bestTop = INT32_MAX;
         for (int turns = 0; turns < (allowTurns ? (box ? 2 : 4) : 1); ++turns) {
             turnedShape(masks.charts[c], masks.profiles, turns, box,
@@ -264,6 +268,13 @@ TightPacking packTight(const ChartMasks &masks, int side, int height, bool allow
             if (box) {
                 cursor =
                     &boxCursor.try_emplace(uint32_t(shape.width) << 16 | uint32_t(shape.height), 0, 0).first->second;
+                if (cursor->first >= y)
+                    std::tie(y, x) = *cursor;
+            } else if (small) {
+                cursor =
+                    &shapeCursor
+                         .try_emplace(uint64_t(shape.width) << 32 | uint64_t(shape.height) << 8 | uint64_t(turns), 0, 0)
+                         .first->second;
                 if (cursor->first >= y)
                     std::tie(y, x) = *cursor;
             }

@@ -17,8 +17,9 @@ namespace {
 
 constexpr int kMaxSide = 16384;  // the packers keep texel rows and columns in int16
 
-// Charts of at least this many blocks get a bitmap (chart_bitmaps.h): smaller ones gain little.
-constexpr int64_t kLeastBitmapBlocks = 64;
+// Charts of at least this many blocks (4 x 4) get a bitmap (chart_bitmaps.h) and are packed by
+// their shape, not their box: on legs 64 -> 16 halves the texture (2048^2 -> 2048 x 1024).
+constexpr int64_t kLeastBitmapBlocks = 16;
 
 // Masks in texels and, with mipBlocks, on 2 x 2 blocks (what the packer then sees); placements
 // in texels either way.
@@ -111,12 +112,12 @@ double fillScale(const Packing &packing, int side, int height, double efficiency
     side /= b, height /= b;                               // in mask units
     const int64_t boxed = int64_t(side) * height / 1024;  // as pack_tight.cpp
     const double rim = (2.0 * masks.padding + b) / b;
-    // Each chart's room now: its box when packed as one, else its rows' spans, or its bitmap's blocks.
+    // Each chart's room now: its box when packed as one (small, no bitmap), else its bitmap's blocks or its rows' spans.
     std::vector<double> now(masks.charts.size());
     for (size_t c = 0; c < masks.charts.size(); ++c) {
         const ChartMask &m = masks.charts[c];
         now[c] = double(m.width) * m.height;
-        if (int64_t(m.width) * m.height < boxed)
+        if (int64_t(m.width) * m.height < boxed && !(b > 1 && packing.bitmaps.has(c)))
             continue;
         now[c] = 0;
         if (b > 1 && packing.bitmaps.has(c)) {
@@ -182,7 +183,11 @@ bool densestFit(const AtlasCharts &charts, const PackOptions &o, int padding, in
     }
     Packing trial;
     trial.block = best.block;
-    for (int i = 0; i < (known > 0 ? o.fillAttempts : 16) && d > floor; ++i) {
+    // Small models pack in a few milliseconds: their fill tries more and goes on after a fit.
+    const bool cheap = known > 0 && charts.faceCount() <= size_t(std::max(0, o.cheapFillFaces));
+    const int tries = known > 0 ? o.fillAttempts + (cheap ? o.cheapFillExtra : 0) : 16;
+    int misses = 0;
+    for (int i = 0; i < tries && d > floor; ++i) {
         if (known > 0 && miss <= fit * 1.005)
             break;
         const Fit f = attempt(charts, o, d, padding, side, height, trial, attempts);
@@ -192,10 +197,11 @@ bool densestFit(const AtlasCharts &charts, const PackOptions &o, int padding, in
             std::swap(best, trial);
         } else {
             miss = d;
+            ++misses;
             if (f.filled > 0)
                 reachable = f.filled;
         }
-        if ((fit > 0 && miss <= fit * 1.005) || (known > 0 && f.fits))
+        if ((fit > 0 && miss <= fit * 1.005) || (known > 0 && f.fits && !cheap))
             break;  // bracketed; or filled: a fill tries again only after a miss
         reachable = std::max(reachable, fitFilled);
         double next = f.grow > 0 ? d * f.grow : f.demand > 0 ? d * std::sqrt(reachable / f.demand) : 0;
@@ -206,6 +212,8 @@ bool densestFit(const AtlasCharts &charts, const PackOptions &o, int padding, in
             next = fallback;
             fallback = 0;
         }
+        if (known > 0 && misses >= 2)  // a miss's partial packing aims too low: halve the bracket
+            next = std::sqrt(fit * miss);
         if (!(next > std::max(fit, floor) * 1.001 && next < miss / 1.001))
             next = fit > 0 ? std::sqrt(fit * miss) : d * 0.7;
         d = next;

@@ -19,7 +19,8 @@
 //     packing's masks, fills the texture as densely as that packing filled its rows; after a
 //     miss, where the first packing's height grown like the density squared reaches 97% of the
 //     texture; skipped when it would gain under 4%; after a second miss, the geometric mean of
-//     the fit and the lowest miss), so the charts fill it instead of leaving up
+//     the fit and the lowest miss; models up to 32768 faces go on after a fit, cheapFillFaces),
+//     so the charts fill it instead of leaving up
 //     to three quarters empty after rounding; a small texture whose charts still fill under
 //     half of it (rims of few small charts) steps up while small (leastChartShare). If even
 //     the largest texture is too small the
@@ -62,6 +63,10 @@ struct PackOptions {
     // coverage 50 -> 57%). Tight packing only.
     bool fillTexture = true;
     int fillAttempts = 3;
+    // Models of at most cheapFillFaces faces pack in a few milliseconds: their fill packs up to
+    // cheapFillExtra more times and goes on halving the bracket after a fit.
+    int cheapFillFaces = 32768;
+    int cheapFillExtra = 2;
     // Density mode with fillTexture, small textures: each chart's rim (padding, blocks) costs
     // texels whatever the density, and on a model of few small charts the smallest texture
     // holding them is mostly rims (12 faces: 5% charts in 16 x 8). While the charts' projected
