@@ -54,7 +54,7 @@ void run(constrained::FairingState<kQuads> &s) {
         ++s.report.passes;
     }
     if (s.options.passes > 0 && s.options.driftRounds > 0)
-        removeDrift(s, s.options.driftRounds);
+        removeDrift(s, s.options.driftRounds, s.options.driftWideRounds);
     finish(s);
 }
 
@@ -67,17 +67,18 @@ ConstrainedFairingReport fairConstrained(const MutablePolygonMesh &mesh, const u
     ConstrainedFairingReport report;
     if (options.passes < 0 || options.normalLevels < 0 || options.normalLevels > 8 || options.positionSweeps < 0 ||
         options.stepReach < 1 || options.featureReach < 0 || options.cornerFlats < 0 || options.driftRounds < 0 ||
-        options.featureFitIterations < 0 ||
+        options.driftWideRounds < 0 || options.featureFitIterations < 0 ||
         !(options.featureSpreadDegrees >= 0.0f && options.featureSpreadDegrees < 180.0f) ||
         !(options.featureFlatDegrees >= 0.0f && options.featureFlatDegrees < 90.0f) ||
         !(options.cellHalfWidth > 0.0f) || !std::isfinite(options.cellHalfWidth) ||
         !(options.creaseAngleDegrees > 0.0f && options.creaseAngleDegrees < 180.0f) ||
         !std::isfinite(options.voxelSize) || options.voxelSize < 0.0f)
-        throw OptionError("constrained fairing: passes, positionSweeps, driftRounds >= 0, normalLevels in [0, 8], "
-                          "featureFitIterations >= 0, featureSpread in [0, 180), featureFlat in [0, 90), stepReach >= "
-                          "1, featureReach >= 0, cornerFlats >= 0, "
-                          "cellHalfWidth > 0, creaseAngle in (0, 180), voxelSize "
-                          "finite and >= 0");
+        throw OptionError(
+            "constrained fairing: passes, positionSweeps, driftRounds, driftWideRounds >= 0, normalLevels in [0, 8], "
+            "featureFitIterations >= 0, featureSpread in [0, 180), featureFlat in [0, 90), stepReach >= "
+            "1, featureReach >= 0, cornerFlats >= 0, "
+            "cellHalfWidth > 0, creaseAngle in (0, 180), voxelSize "
+            "finite and >= 0");
     if (const FairingStatus status = checkFairingInput(mesh, options.passes, &report.message);
         status != FairingStatus::Ok)
         return finishedReport(report, status, report.message);

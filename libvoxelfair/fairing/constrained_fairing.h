@@ -40,7 +40,10 @@
 //    the flat faces with it (a rounded box became a pillow, +3.8% volume). So the displacement
 //    along the normal is averaged over each vertex's neighbourhood (driftRounds Jacobi rounds)
 //    and that local mean is taken off: the surface keeps the voxels' volume locally, as the
-//    voxelization of a plane or a smooth surface does on average.
+//    voxelization of a plane or a smooth surface does on average. Far from where the shape
+//    turns (edges, fillets, lattice faces), the mean over driftWideRounds rounds is taken off
+//    instead, which leaves less of the staircase's ripple on smooth surfaces
+//    (constrained/drift_removal.cpp).
 // Optional (fitPlanes, off by default): flat faces at any orientation found as digital plane
 // regions, their vertices held on fitted planes, edge lines and corners (constrained/
 // plane_regions.cpp). It brings turned boxes, plates and wedges about 0.01 RMS nearer, but costs
@@ -90,6 +93,9 @@ struct ConstrainedFairingOptions {
     bool fitPlanes = false;
     // Neighbourhood rounds of the drift removal (step 5); 0 turns it off.
     int driftRounds = 8;
+    // Rounds of step 5's wide mean, taken off far from where the shape turns; at most
+    // driftRounds: the local mean everywhere.
+    int driftWideRounds = 24;
     // Half-width, in voxels, of the box around its input position that each vertex stays in.
     // 0.5 is the constraint of surface nets; it must be > 0.
     float cellHalfWidth = 0.5f;

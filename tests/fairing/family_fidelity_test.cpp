@@ -5,7 +5,7 @@
 // table is printed, and its goal class is asserted on every instance:
 //
 //   class          issue 15's goal (RMS, voxels)   asserted here          met? (8 instances)
-//   Curved         0.07                            0.08                   no: worst 0.078 (a capsule)
+//   Curved         0.07                            0.07                   yes: worst 0.069 (a capsule)
 //   Cylinder       0.08                            0.155                  no: worst 0.146 (on an axis)
 //   LatticeBox     0.03                            0.03                   yes (exact: 0)
 //   FlatAndEdges   0.10                            per family, below      rounded boxes only
@@ -42,8 +42,9 @@ constexpr int kInstances = 8;
 // The bound asserted on every instance of a family (see the table above).
 double rmsBound(const shapes::Family &family) {
     switch (family.goal) {
-    // (0.075 held on 4 instances; at 8 a capsule reaches 0.078, a sphere and a torus 0.072.)
-    case shapes::FamilyGoal::Curved: return 0.08;
+    // (Met since step 5's wide mean, constrained/drift_removal.cpp: capsule #4 0.0694, was 0.078;
+    // torus #6 0.066, sphere #6 0.065, ellipsoid #5 0.063.)
+    case shapes::FamilyGoal::Curved: return 0.07;
     case shapes::FamilyGoal::Cylinder: return 0.155;
     case shapes::FamilyGoal::LatticeBox: return 0.03;
     case shapes::FamilyGoal::FlatAndEdges: break;
@@ -52,9 +53,9 @@ double rmsBound(const shapes::Family &family) {
     // instances from 4 to 8: the turned box from 0.145 to 0.27, its instance #4 turned 8.2 degrees
     // is at 0.245, raw 0.271; the chamfered plate from 0.145 to 0.19, #6 at 0.175.)
     static const std::map<std::string, double> measured = {
-        {"rounded box", 0.10},                 // goal met (worst 0.083)
-        {"barrel on hull", 0.105},             // 0.101
-        {"rounded box on the lattice", 0.15},  // 0.137
+        {"rounded box", 0.10},                  // goal met (worst 0.083)
+        {"barrel on hull", 0.105},              // 0.101
+        {"rounded box on the lattice", 0.145},  // 0.130 (0.137 before step 5's wide mean)
         {"box turned about one axis", 0.27},
         {"box turned about two axes", 0.165},  // 0.151
         {"plate", 0.14},                       // 0.128
@@ -69,7 +70,7 @@ double rmsBound(const shapes::Family &family) {
 const std::vector<std::string> kBehindPaper = {};
 const std::vector<std::string> kBehindVtk = {"rounded box on the lattice"};
 // Families with instances worse than the paper's pass: axis cylinder #5 (0.146 against 0.135);
-// rounded boxes on the lattice #0 (0.137 / 0.129) and #1 (0.121 / 0.080, +3% volume).
+// rounded boxes on the lattice #0 (0.130 / 0.129) and #1 (0.121 / 0.080, +3% volume).
 const std::vector<std::string> kInstancesBehindPaper = {"cylinder on an axis", "rounded box on the lattice"};
 bool listed(const std::vector<std::string> &list, const std::string &name) {
     return std::find(list.begin(), list.end(), name) != list.end();

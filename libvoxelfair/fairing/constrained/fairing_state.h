@@ -16,6 +16,8 @@
 //   position_kernel.h    moveFreeBlock                   step 3's update, four vertices in SSE
 //   feature_fit.cpp      fitFeatureVertices              step 3b: vertices where the normals turn
 //                                                        moved towards their polygons' planes
+//   drift_removal.cpp    removeDrift                     step 5: the local mean of the move along
+//                                                        the normals taken off (two scales)
 //
 // Every stage takes the state and documents which arrays it reads and which it fills. Member
 // pointers used in hot loops are copied to locals in the stages: stores through the byte arrays
@@ -96,7 +98,7 @@ struct FairingState {
         return 3 * Arena::bytes<uint32_t>(V) + Arena::bytes<uint32_t>(V + 1) + Arena::bytes<uint32_t>(cornerCount);
     }
     // removeDrift's arrays, taken after step 3's arrays once the passes are done.
-    size_t driftBytes(size_t slots) const { return 3 * Arena::bytes<float>(slots) + Arena::bytes<uint32_t>(V); }
+    size_t driftBytes(size_t slots) const { return 5 * Arena::bytes<float>(slots) + Arena::bytes<uint32_t>(V); }
     // The arrays of the setup stages, taken before the first one runs.
     void takeArrays() {
         kind = arrays.take<VertexKind>(V);
@@ -206,7 +208,7 @@ void lendAnchorNormals(FairingState<kQuads> &s);
 template <bool kQuads>
 void holdAnchors(FairingState<kQuads> &s);
 template <bool kQuads>
-void removeDrift(FairingState<kQuads> &s, int rounds);
+void removeDrift(FairingState<kQuads> &s, int rounds, int wideRounds);
 template <bool kQuads>
 void fitFreeVertices(FairingState<kQuads> &s);
 template <bool kQuads>

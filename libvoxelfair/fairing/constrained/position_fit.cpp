@@ -21,12 +21,8 @@
 // alongNormal, and turning / anyTurning: a neighbour's normal more than featureSpread away, for
 // feature_fit.cpp) prepares one pass; sweep(forward) runs one Gauss-Seidel sweep, edge-line vertices
 // then free ones, in slot order or its reverse, each clamped into its cell as it moves; finish
-// writes input + offset to the free and edge-line vertices and the report's counts. removeDrift
-// (step 5 of constrained_fairing.h) averages each vertex's n . d with its neighbours' `rounds`
-// times (Jacobi, over slots: regular blocks read their padded neighbour lists, the rest their
-// corner lists; the same sums in the same order either way, four regular slots at once in SSE)
-// and takes that mean off along n. It reads the normals from `fit` (the last pass's, which equal
-// vertexNormal's bits), slot by slot: in memory order, where vertexNormal is by vertex.
+// writes input + offset to the free and edge-line vertices and the report's counts. Step 5
+// (removeDrift) is in drift_removal.cpp.
 #include "fairing/constrained/fairing_state.h"
 
 #include <algorithm>
@@ -206,84 +202,6 @@ VOXELFAIR_NOINLINE void finish(FairingState<kQuads> &s) {
 }
 
 template <bool kQuads>
-VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds) {
-    const size_t V = s.V, slots = s.zeroSlot + 1, blocks = s.freeSlots / 4;
-    const uint32_t *const start = s.vertexStart, *const next = s.vertexNext, *const rank = s.rank;
-    const uint32_t *const vertexAt = s.vertexAt, *const neighbours = s.slotNeighbours;
-    const uint8_t *const regular = s.regularBlock;
-    const VertexKind *const kind = s.kind;
-    Offset *const offset = s.offset;
-    // n . d per vertex (0 for those that do not move), by slot, averaged with the neighbours'
-    // `rounds` times (Jacobi). Empty slots and the zero slot have weight 0 and stay 0.
-    float *along = s.scratch.template take<float>(slots), *smooth = s.scratch.template take<float>(slots);
-    float *const weight = s.scratch.template take<float>(slots);
-    std::fill(along, along + slots, 0.0f);
-    std::fill(smooth, smooth + slots, 0.0f);
-    std::fill(weight, weight + slots, 0.0f);
-    // The vertices that are not free, or free outside regular blocks.
-    uint32_t *const others = s.scratch.template take<uint32_t>(V);
-    size_t otherCount = 0;
-    // (A free vertex's normal is its lane's in `fit`, slot by slot; empty slots' are 0.)
-    const FitBlock *const fit = s.fit;
-    for (size_t slot = 0; slot < s.freeSlots; ++slot)
-        along[slot] = glm::dot(fit[slot / 4].n(int(slot % 4)), offset[slot].d);
-    for (size_t v = 0; v < V; ++v) {
-        const uint32_t slot = rank[v];
-        weight[slot] = 1.0f / float(1 + start[v + 1] - start[v]);
-        if (!isFree(kind[v]) || !regular[slot / 4])
-            others[otherCount++] = uint32_t(v);
-    }
-    // The same sums in the same order as over each vertex's corner list: a regular block's lists
-    // (sweep_layout.cpp) are that list padded with the zero slot, whose 0 adds nothing.
-    for (int round = 0; round < rounds; ++round) {
-        for (size_t block = 0; block < blocks; ++block) {
-            if (!regular[block])
-                continue;
-#ifdef VOXELFAIR_SSE2
-            // The four slots' sums side by side, each in the order below.
-            const uint32_t *n = neighbours + kRegularValence * 4 * block;
-            auto gather = [&](uint32_t i) {
-                return _mm_setr_ps(along[n[i] / sizeof(Offset)], along[n[kRegularValence + i] / sizeof(Offset)],
-                                   along[n[2 * kRegularValence + i] / sizeof(Offset)],
-                                   along[n[3 * kRegularValence + i] / sizeof(Offset)]);
-            };
-            __m128 sum = _mm_load_ps(along + 4 * block);
-            for (uint32_t i = 0; i < kRegularValence; ++i)
-                sum = _mm_add_ps(sum, gather(i));
-            _mm_store_ps(smooth + 4 * block, _mm_mul_ps(sum, _mm_load_ps(weight + 4 * block)));
-            continue;
-#endif
-            for (size_t slot = 4 * block; slot < 4 * block + 4; ++slot) {
-                const uint32_t *n = neighbours + kRegularValence * slot;
-                float sum = along[slot];
-                for (uint32_t i = 0; i < kRegularValence; ++i)
-                    sum += along[n[i] / sizeof(Offset)];
-                smooth[slot] = sum * weight[slot];
-            }
-        }
-        for (size_t i = 0; i < otherCount; ++i) {
-            const uint32_t v = others[i];
-            float sum = along[rank[v]];
-            for (uint32_t j = start[v]; j < start[v + 1]; ++j)
-                sum += along[rank[next[j]]];
-            smooth[rank[v]] = sum * weight[rank[v]];
-        }
-        std::swap(along, smooth);
-    }
-    std::vector<uint8_t> held(s.anchored.empty() ? 0 : V, 0);
-    for (uint32_t v : s.anchored)
-        held[v] = 1;
-    const float half = s.half;
-    for (size_t slot = 0; slot < s.freeSlots; ++slot) {
-        const uint32_t v = vertexAt[slot];
-        if (v != kNone && (held.empty() || !held[v])) {
-            Offset &o = offset[slot];
-            o.d = glm::clamp(o.d - along[slot] * fit[slot / 4].n(int(slot % 4)), -half, half);
-        }
-    }
-}
-
-template <bool kQuads>
 void lendAnchorNormals(FairingState<kQuads> &s) {
     for (size_t i = 0; i < s.anchored.size(); ++i)
         s.vertexNormal[s.anchored[i]].n = s.anchoredNormal[i];
@@ -305,8 +223,6 @@ void holdAnchors(FairingState<kQuads> &s) {
     }
 }
 
-template void removeDrift(FairingState<true> &, int);
-template void removeDrift(FairingState<false> &, int);
 template void lendAnchorNormals(FairingState<true> &);
 template void lendAnchorNormals(FairingState<false> &);
 template void holdAnchors(FairingState<true> &);

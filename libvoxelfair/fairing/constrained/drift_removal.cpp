@@ -1,0 +1,163 @@
+// Step 5 of the constrained fairing (constrained_fairing.h): the drift along the normals taken off.
+//
+// Why: step 3 only asks edges to be perpendicular to normals, so a face can slide along its
+// normal and a part can grow; near edges and fillets, whose filtered normals turn over more quads
+// than the true surface does, the cells push the rounded profile out and drag the flat faces with
+// it (a rounded box became a pillow, +3.8% volume). So each vertex's displacement along its
+// normal, n . d, is averaged over its neighbourhood and that local mean is taken off: the surface
+// keeps the voxels' volume locally, as the voxelization of a plane or a smooth surface does on
+// average.
+//
+// Two scales (ours). The mean over `rounds` Jacobi rounds (8: a few rings) is what holds faces
+// beside edges and fillets flat, but on a smooth surface it still carries some of the staircase's
+// ripple, which subtracting it puts back. Far from where the shape turns, the mean over
+// `wideRounds` rounds (24) is taken off instead: on the curved families of
+// testkit/shapes/shape_families.h (spheres, ellipsoids, tori, capsules at random orientations,
+// 8 instances each) the worst RMS drops from 0.071-0.078 to 0.063-0.069 voxels, and no family
+// gets worse by more than 0.001 (tests/fairing/family_fidelity_test.cpp). Where the shape turns:
+// a vertex that is not free (edge lines, pinned), whose normal is more than kTurnDegrees from a
+// neighbour's (an edge or a fillet the staircase hides; a sphere of radius 5 turns about 11
+// degrees a quad), or whose normal is within kLatticeDegrees of a lattice axis (a face on a
+// lattice plane, exact already, beside a fillet: the wide mean would carry the fillet's drift
+// onto it). That mark is averaged over `rounds` rounds too, and the local mean weighs
+// min(1, kNearGain * mark): the local one within a few rings of any marked vertex, blending into
+// the wide one beyond.
+//
+// Contract (removeDrift; reads offset, fit (the last pass's normals, which equal vertexNormal's
+// bits, slot by slot), vertexNormal, kind, the corner lists and the slots; writes offset[.].d of
+// the free vertices, not those held on planes): each vertex's n . d (0 for those that do not
+// move), by slot, is averaged with its neighbours' (Jacobi, over slots: regular blocks read their
+// padded neighbour lists, the rest their corner lists; the same sums in the same order either way,
+// four regular slots at once in SSE); the blend above is taken off along n, clamped into the cell
+// (step 4). With wideRounds <= rounds, the local mean alone (bit for bit the one-scale step).
+#include "fairing/constrained/fairing_state.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+namespace voxelfair::constrained {
+inline namespace VOXELFAIR_SIMD_VARIANT {
+
+namespace {
+
+constexpr float kTurnDegrees = 15.0f;    // a neighbour's normal this far: the shape turns here
+constexpr float kLatticeDegrees = 1.0f;  // a normal this near a lattice axis: a lattice face
+constexpr float kNearGain = 50.0f;       // the averaged mark at which the local mean takes over
+
+}  // namespace
+
+template <bool kQuads>
+VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds, int wideRounds) {
+    const size_t V = s.V, slots = s.zeroSlot + 1, blocks = s.freeSlots / 4;
+    const uint32_t *const start = s.vertexStart, *const next = s.vertexNext, *const rank = s.rank;
+    const uint32_t *const vertexAt = s.vertexAt, *const neighbours = s.slotNeighbours;
+    const uint8_t *const regular = s.regularBlock;
+    const VertexKind *const kind = s.kind;
+    Offset *const offset = s.offset;
+    // n . d per vertex (0 for those that do not move), by slot, averaged with the neighbours'
+    // (Jacobi). Empty slots and the zero slot have weight 0 and stay 0.
+    float *along = s.scratch.template take<float>(slots), *smooth = s.scratch.template take<float>(slots);
+    float *const weight = s.scratch.template take<float>(slots);
+    std::fill(along, along + slots, 0.0f);
+    std::fill(smooth, smooth + slots, 0.0f);
+    std::fill(weight, weight + slots, 0.0f);
+    // The vertices that are not free, or free outside regular blocks.
+    uint32_t *const others = s.scratch.template take<uint32_t>(V);
+    size_t otherCount = 0;
+    // (A free vertex's normal is its lane's in `fit`, slot by slot; empty slots' are 0.)
+    const FitBlock *const fit = s.fit;
+    for (size_t slot = 0; slot < s.freeSlots; ++slot)
+        along[slot] = glm::dot(fit[slot / 4].n(int(slot % 4)), offset[slot].d);
+    for (size_t v = 0; v < V; ++v) {
+        const uint32_t slot = rank[v];
+        weight[slot] = 1.0f / float(1 + start[v + 1] - start[v]);
+        if (!isFree(kind[v]) || !regular[slot / 4])
+            others[otherCount++] = uint32_t(v);
+    }
+    // `count` rounds on `values` (by slot; `spare` as large), the result in `values`.
+    // The same sums in the same order as over each vertex's corner list: a regular block's lists
+    // (sweep_layout.cpp) are that list padded with the zero slot, whose 0 adds nothing.
+    auto average = [&](float *&values, float *&spare, int count) {
+        for (int round = 0; round < count; ++round) {
+            for (size_t block = 0; block < blocks; ++block) {
+                if (!regular[block])
+                    continue;
+#ifdef VOXELFAIR_SSE2
+                // The four slots' sums side by side, each in the order below.
+                const uint32_t *n = neighbours + kRegularValence * 4 * block;
+                auto gather = [&](uint32_t i) {
+                    return _mm_setr_ps(values[n[i] / sizeof(Offset)], values[n[kRegularValence + i] / sizeof(Offset)],
+                                       values[n[2 * kRegularValence + i] / sizeof(Offset)],
+                                       values[n[3 * kRegularValence + i] / sizeof(Offset)]);
+                };
+                __m128 sum = _mm_load_ps(values + 4 * block);
+                for (uint32_t i = 0; i < kRegularValence; ++i)
+                    sum = _mm_add_ps(sum, gather(i));
+                _mm_store_ps(spare + 4 * block, _mm_mul_ps(sum, _mm_load_ps(weight + 4 * block)));
+                continue;
+#endif
+                for (size_t slot = 4 * block; slot < 4 * block + 4; ++slot) {
+                    const uint32_t *n = neighbours + kRegularValence * slot;
+                    float sum = values[slot];
+                    for (uint32_t i = 0; i < kRegularValence; ++i)
+                        sum += values[n[i] / sizeof(Offset)];
+                    spare[slot] = sum * weight[slot];
+                }
+            }
+            for (size_t i = 0; i < otherCount; ++i) {
+                const uint32_t v = others[i];
+                float sum = values[rank[v]];
+                for (uint32_t j = start[v]; j < start[v + 1]; ++j)
+                    sum += values[rank[next[j]]];
+                spare[rank[v]] = sum * weight[rank[v]];
+            }
+            std::swap(values, spare);
+        }
+    };
+    average(along, smooth, rounds);
+    if (wideRounds > rounds) {
+        float *const local = s.scratch.template take<float>(slots);
+        std::copy(along, along + slots, local);
+        average(along, smooth, wideRounds - rounds);
+        // Where the shape turns (see above), by slot; the zero slot stays 0.
+        float *near = s.scratch.template take<float>(slots);
+        std::fill(near, near + slots, 0.0f);
+        const VertexNormal *const vertexNormal = s.vertexNormal;
+        const float turnCos = std::cos(glm::radians(kTurnDegrees));
+        const float latticeCos = std::cos(glm::radians(kLatticeDegrees));
+        for (size_t v = 0; v < V; ++v) {
+            const glm::vec3 n = vertexNormal[v].n, a = glm::abs(n);
+            bool turns = !isFree(kind[v]) || std::max(a.x, std::max(a.y, a.z)) > latticeCos;
+            for (uint32_t j = start[v]; !turns && j < start[v + 1]; ++j)
+                turns = glm::dot(n, vertexNormal[next[j]].n) < turnCos;
+            near[rank[v]] = turns ? 1.0f : 0.0f;
+        }
+        average(near, smooth, rounds);
+        for (size_t slot = 0; slot < s.freeSlots; ++slot) {
+            const float t = std::min(1.0f, kNearGain * near[slot]);
+            along[slot] = t * local[slot] + (1.0f - t) * along[slot];
+        }
+    }
+    std::vector<uint8_t> held(s.anchored.empty() ? 0 : V, 0);
+    for (uint32_t v : s.anchored)
+        held[v] = 1;
+    const float half = s.half;
+    for (size_t slot = 0; slot < s.freeSlots; ++slot) {
+        const uint32_t v = vertexAt[slot];
+        if (v != kNone && (held.empty() || !held[v])) {
+            Offset &o = offset[slot];
+            o.d = glm::clamp(o.d - along[slot] * fit[slot / 4].n(int(slot % 4)), -half, half);
+        }
+    }
+}
+
+template void removeDrift(FairingState<true> &, int, int);
+template void removeDrift(FairingState<false> &, int, int);
+
+}  // namespace VOXELFAIR_SIMD_VARIANT
+}  // namespace voxelfair::constrained
