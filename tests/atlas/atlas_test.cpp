@@ -1,6 +1,7 @@
 // Section 4.5 texture atlas: charts, packing, bake and the measures, on families of meshes.
 #include "atlas/atlas_measures.h"
 #include "shapes/atlas_test_meshes.h"
+#include "atlas/chart_masks.h"
 #include "atlas/chart_overlap.h"
 #include "atlas/edge_adjacency.h"
 #include "atlas/texel_raster.h"
@@ -581,6 +582,40 @@ TEST(Packing, TightFillsTheReferenceSphereBeyondSeventyPercent) {
     const AtlasLayout paperLayout = packCharts(charts, paper);
     EXPECT_LT(measureAtlas(sphere.view(), charts, paperLayout).packingEfficiency, m.packingEfficiency);
     EXPECT_LT(paperLayout.texelsPerUnit, layout.texelsPerUnit);
+}
+
+// A chart's mask holds its footprint and padding and nothing more: a flat rectangle of random
+// sizes, offsets and densities touches ceil(length + the masks' two 1/256-texel margins) texels
+// per side, the least any placement can (its box once started exactly on a texel boundary,
+// where the margin took the whole row and column before it).
+TEST(Packing, AMaskIsNoLargerThanItsChart) {
+    std::mt19937_64 random(20261126);
+    std::uniform_real_distribution<double> size(0.5, 12.0), offset(-50.0, 50.0), density(1.0, 16.0);
+    for (int i = 0; i < 200; ++i) {
+        const glm::dvec2 s(size(random), size(random));
+        const glm::dvec2 o(offset(random), offset(random));
+        const std::vector<glm::vec3> positions = {
+            {o.x, o.y, 0}, {o.x + s.x, o.y, 0}, {o.x + s.x, o.y + s.y, 0}, {o.x, o.y + s.y, 0}};
+        const std::vector<uint32_t> triangles = {0, 1, 2, 0, 2, 3};
+        AtlasMesh mesh;
+        static_cast<TriangleMesh &>(mesh) = triangleMesh(positions, triangles);
+        const AtlasCharts charts = computeCharts(mesh);
+        ASSERT_EQ(charts.chartCount(), 1u);
+        const double d = density(random);
+        for (int padding : {1, 2}) {
+            ChartMasks masks;
+            ASSERT_TRUE(rasterizeChartMasks(charts, d, padding, 4096, masks));
+            const glm::dvec2 texels = glm::dvec2(charts.chartSize[0]) * d + 2.0 / 256;
+            for (int axis = 0; axis < 2; ++axis) {
+                const double fraction = texels[axis] - std::floor(texels[axis]);
+                if (fraction < 2.0 / 256 || fraction > 1 - 2.0 / 256)
+                    continue;  // float UVs decide which way it rounds
+                const int footprint = axis == 0 ? masks.charts[0].width : masks.charts[0].height;
+                EXPECT_EQ(footprint - 2 * padding, int(std::ceil(texels[axis])))
+                    << "size " << s.x << " x " << s.y << " at " << d << " texels per unit, axis " << axis;
+            }
+        }
+    }
 }
 
 TEST(Packing, PaperSquareIsCentred) {
