@@ -101,6 +101,8 @@ bool FilterVoxelfairPlugin::applyNormalMap(MeshDocument &md, const RichParameter
     options.width = width;
     options.height = height;
     options.level = parameters.getEnum("level");
+    // A given texture size is the map's own; else small atlases get a finer map (normal_bake.h).
+    options.minSide = sizeFrom == "given" ? 0 : std::max(0, parameters.getInt("minSide"));
     options.dilation = parameters.getInt("dilation");
     options.blocks = parameters.getBool("blocks");
     if (cb)
@@ -126,7 +128,7 @@ bool FilterVoxelfairPlugin::applyNormalMap(MeshDocument &md, const RichParameter
         report(
             "Bake Normal Map: the parts of the source layer (nodes, each face's part) restored on the current layer");
     report(QString("Bake Normal Map: %1 texels from layer '%2' (%3 faces) onto %4 faces, %5 (size from %6), "
-                   "level %7, MikkTSpace tangents, %8 gutter rings -> %9 in %10 ms")
+                   "level %7 (x%11), MikkTSpace tangents, %8 gutter rings -> %9 in %10 ms")
                .arg(map.texelsBaked)
                .arg(source->label())
                .arg(source->cm.fn)
@@ -136,7 +138,8 @@ bool FilterVoxelfairPlugin::applyNormalMap(MeshDocument &md, const RichParameter
                .arg(options.level)
                .arg(options.dilation)
                .arg(path)
-               .arg(timer.elapsed()));
+               .arg(timer.elapsed())
+               .arg(normalMapScale(options)));
     if (map.texelsWithoutSource > 0)
         report(QString("Bake Normal Map: %1 texels had no source face near their UV and stay flat")
                    .arg(map.texelsWithoutSource));

@@ -21,7 +21,9 @@ meshlabserver with voxelfair's plugins:
                   shared: decimation with texture keeps the UVs), each decimated copy of the
                   faired layer with its own normal map NAME_lodN_normal.png baked from the full
                   faired mesh, and the same house mask or material maps (not with --no-normal-map)
-                  --normal-map-resolution half bakes the normal maps at half the base colour's
+                  the normal map is the base colour's size, 2x or 4x each side for atlases
+                  under 1024 texels (long side at least 1024); --normal-map-resolution atlas
+                  keeps the base colour's size, half bakes the normal maps at half its
                   size each side (one texel per 2 x 2 atlas block): a quarter of the memory
   --mode import   the voxel surface only: NAME.ply with face colours and each face's section
   --mode compare  the same input through voxelfair's fairing (paper and constrained modes), through
@@ -208,6 +210,7 @@ def pipeline_script(args, texture, normal, house=None, materials=None):
         "COLOURS": "1" if args.colours == "smoothed" else "0",
         "TEXTURE_FILE": str(texture), "DECIMATION": repr(args.decimate), "NORMAL_FILE": str(normal),
         "HOUSE_FILE": str(house or ""), "NORMAL_LEVEL": "1" if args.normal_map_resolution == "half" else "0",
+        "NORMAL_MIN_SIDE": "0" if args.normal_map_resolution == "atlas" else "1024",
         "BLOCKS": "false" if args.packing == "paper" else "true",
     }
     for key, path in zip(("METAL_ROUGH_FILE", "EMISSIVE_FILE", "TRANSMISSION_FILE"), materials or ("", "", "")):
@@ -450,9 +453,11 @@ def main():
                         "e.g. 1,0.25,0.05 -> NAME_lod0.glb, NAME_lod1.glb, NAME_lod2.glb (glTF only)")
     parser.add_argument("--no-normal-map", action="store_true",
                         help="do not bake the faired mesh's shading into a normal map for the decimated mesh")
-    parser.add_argument("--normal-map-resolution", choices=("full", "half"), default="full",
-                        help="full: the base colour's size (default); half: half each side, one texel per 2 x 2 "
-                        "block of the atlas (its mip 1): a quarter of the texels, memory and baking time")
+    parser.add_argument("--normal-map-resolution", choices=("full", "atlas", "half"), default="full",
+                        help="full (default): the base colour's size, or 2x / 4x each side for atlases under 1024 "
+                        "texels on the long side (the map's long side at least 1024; same UVs); atlas: the base "
+                        "colour's size always; half: half each side, one texel per 2 x 2 block of the atlas (its "
+                        "mip 1): a quarter of the texels, memory and baking time")
     parser.add_argument("--jobs", "-j", type=int, default=os.cpu_count() or 1, help="models converted at once")
     parser.add_argument("--timeout", type=int, default=600, help="seconds allowed per meshlabserver run")
     parser.add_argument("--build", help="voxelfair build folder holding runtime/ (default: ./build)")

@@ -67,6 +67,15 @@ constexpr uint8_t kFromSource = 2;  // a state bit beside kTexelPainted (texel_d
 
 }  // namespace
 
+int normalMapScale(const NormalBakeOptions &options) {
+    const int longSide = std::max(options.width, options.height);
+    int scale = 1;
+    while (options.level == 0 && scale < 4 && longSide * scale < options.minSide &&
+           longSide * scale * 2 <= 16384)
+        scale *= 2;
+    return scale;
+}
+
 NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &target, const NormalBakeOptions &options) {
     NormalMap out;
     validate(source, "source");
@@ -75,9 +84,13 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
         throw OptionError("the normal map's sides must be between 1 and 16384 texels");
     if (options.level < 0 || options.level > 1)
         throw OptionError("the normal map's level must be 0 (the atlas' size) or 1 (half each side)");
-    // Level 1: one texel per 2 x 2 block (a side of odd length gets a last half block).
-    const int width = (options.width + options.level) >> options.level,
-              height = ((options.height > 0 ? options.height : options.width) + options.level) >> options.level;
+    if (options.minSide < 0)
+        throw OptionError("the normal map's minimum side must be 0 (the atlas' size) or more");
+    // Level 1: one texel per 2 x 2 block (a side of odd length gets a last half block); level 0:
+    // f texels per atlas texel each side.
+    const int scale = normalMapScale(options);
+    const int width = ((options.width + options.level) >> options.level) * scale,
+              height = (((options.height > 0 ? options.height : options.width) + options.level) >> options.level) * scale;
     const size_t texels = size_t(width) * size_t(height);
     out.width = width;
     out.height = height;
@@ -285,8 +298,8 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
     for (size_t b = 0; b < bandCount; ++b)
         out.texelsBaked += baked[b], out.texelsWithoutSource += flat[b];
 
-    fillNormalGutter(width, height, state, out.rgba, options.dilation, options.blocks && options.level == 0,
-                     options.threads);
+    fillNormalGutter(width, height, state, out.rgba, options.dilation * scale,
+                     options.blocks && options.level == 0 ? 2 * scale : 0, options.threads);
     return out;
 }
 

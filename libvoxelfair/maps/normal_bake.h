@@ -71,11 +71,20 @@ struct NormalBakeOptions {
     // atlas' mip 1 of the full-size map's layout, a quarter of its texels and memory. Smooth
     // faired surfaces lose little at level 1 (README: the per-model angle table has both).
     int level = 0;
-    // The gutter, as the base colour's (atlas/bake.h): `dilation` rings of the map's own texels,
-    // then, with `blocks` (an atlas packed on 2 x 2 blocks, PackOptions::mipBlocks, the default)
-    // at level 0, the rest of every aligned 2 x 2 block a chart or its rings touch takes the
-    // renormalised mean of the block's painted texels, so a box-filtered mip 1 never mixes
-    // charts. The defaults are the base colour's for the atlas' default gutter of 2.
+    // At level 0, a small atlas gets a finer map (same UVs; glTF lets a normalTexture have its own
+    // size): each side times the smallest power of two f = 1, 2 or 4 that brings the long side
+    // to at least `minSide` texels. Default 1024: atlases of 1024 texels or more on the long side
+    // stay 1:1, smaller ones get 2x or 4x (a 300-texel atlas: 4x, 1200). The faired surface
+    // turns within an atlas texel where a unit is small (measured, README: the angle table).
+    // 0: the atlas' size. Level 1 ignores it. normalMapScale gives f.
+    int minSide = 1024;
+    // The gutter, as the base colour's (atlas/bake.h): `dilation` rings of atlas texels (f rings
+    // of the map's own), then, with `blocks` (an atlas packed on 2 x 2 blocks,
+    // PackOptions::mipBlocks, the default) at level 0, the rest of every aligned 2 x 2 block of
+    // the atlas (2f x 2f texels of the map) a chart or its rings touch takes the renormalised
+    // mean of the block's painted texels, so a box-filtered mip 1 (and every mip down to the
+    // atlas' mip 1) never mixes charts. The defaults are the base colour's for the atlas' default
+    // gutter of 2.
     int dilation = 1;
     bool blocks = true;
     int threads = 0;  // 0: one per hardware thread
@@ -92,9 +101,13 @@ struct NormalMap {
     size_t texelsWithoutSource = 0;  // target texels left flat (no source face near their UV, or no frame)
 };
 
+// The factor f (1, 2 or 4) by which the map's sides exceed the atlas' at level 0 (minSide above);
+// 1 at level 1 or with minSide 0.
+int normalMapScale(const NormalBakeOptions &options);
+
 // Throws MeshError for empty or inconsistent meshes (no faces, null arrays, indices out of range;
-// the message names the source or target mesh) and OptionError for a side outside [1, 16384] or
-// a level outside [0, 1]
+// the message names the source or target mesh) and OptionError for a side outside [1, 16384],
+// a level outside [0, 1] or a negative minSide
 // (the library's one error style, base/error.h).
 NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &target, const NormalBakeOptions &options);
 

@@ -19,12 +19,14 @@ inline uint8_t encodeFast(float c) { return uint8_t(std::clamp(int(c * 127.5f + 
 
 constexpr int kBlockBandRows = 32;  // even: bands hold whole blocks
 
-// The block at (x, y): its unpainted texels take the renormalised mean of its painted ones.
-void fillBlock(int x, int y, int width, int height, std::vector<uint8_t> &state, uint8_t *image) {
+constexpr int kMaxBlockSide = 8;  // a map up to 4 times the atlas' side (normal_bake.h)
+
+// The side x side block at (x, y): its unpainted texels take the renormalised mean of its painted ones.
+void fillBlock(int x, int y, int side, int width, int height, std::vector<uint8_t> &state, uint8_t *image) {
     int sum[3] = {0, 0, 0}, n = 0, texelCount = 0;
-    size_t at[4];
-    for (int dy = 0; dy < std::min(2, height - y); ++dy)
-        for (int dx = 0; dx < std::min(2, width - x); ++dx) {
+    size_t at[kMaxBlockSide * kMaxBlockSide];
+    for (int dy = 0; dy < std::min(side, height - y); ++dy)
+        for (int dx = 0; dx < std::min(side, width - x); ++dx) {
             const size_t t = size_t(y + dy) * size_t(width) + size_t(x + dx);
             at[texelCount++] = t;
             if (state[t] & kTexelPainted) {
@@ -53,7 +55,7 @@ void fillBlock(int x, int y, int width, int height, std::vector<uint8_t> &state,
 }  // namespace
 
 void fillNormalGutter(int width, int height, std::vector<uint8_t> &state, std::vector<uint8_t> &rgba, int rings,
-                      bool blocks, int threads) {
+                      int blockSide, int threads) {
     const uint8_t *const painted = state.data();
     uint8_t *const image = rgba.data();
     dilateTexels(width, height, state, rings, threads, [painted, image, width, height](int x, int y) {
@@ -77,8 +79,18 @@ void fillNormalGutter(int width, int height, std::vector<uint8_t> &state, std::v
         p[0] = encodeFast(c.x), p[1] = encodeFast(c.y), p[2] = encodeFast(c.z);
         return true;
     });
-    if (!blocks)
+    if (blockSide <= 0)
         return;
+    blockSide = std::min(blockSide, kMaxBlockSide);
+    if (blockSide != 2) {
+        // A finer map (2f x 2f blocks, few texels): block by block.
+        const size_t side = size_t(blockSide), bands = (size_t(height) + side - 1) / side;
+        runBands(bands, threads, [&](size_t band) {
+            for (int x = 0; x < width; x += blockSide)
+                fillBlock(x, int(band * side), blockSide, width, height, state, image);
+        });
+        return;
+    }
     // Every aligned 2 x 2 block with a painted texel belongs to one chart (the atlas' packing).
     // Most blocks are all painted or all empty: 4 blocks (8 texels of 2 rows) are tested at once
     // and skipped when so.
@@ -98,10 +110,10 @@ void fillNormalGutter(int width, int height, std::vector<uint8_t> &state, std::v
                 if ((a | b) == 0 || (a & b) == kAll)
                     continue;
                 for (int k = x; k < x + 8; k += 2)
-                    fillBlock(k, y, width, height, state, image);
+                    fillBlock(k, y, 2, width, height, state, image);
             }
             for (; x < width; x += 2)
-                fillBlock(x, y, width, height, state, image);
+                fillBlock(x, y, 2, width, height, state, image);
         }
     });
 }

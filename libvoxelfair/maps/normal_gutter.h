@@ -1,8 +1,10 @@
 // The gutter of a baked normal map (normal_bake.h), as the base colour's (atlas/bake.h, paper
 // section 4.5): `rings` rings of texels around the painted ones take the renormalised mean of
-// their painted 8-neighbours (texel_dilation.h); then, with `blocks` (an atlas packed on aligned
-// 2 x 2 blocks, PackOptions::mipBlocks), the unpainted texels of every block with a painted texel
-// take the renormalised mean of its painted ones, so a box-filtered mip 1 never mixes charts.
+// their painted 8-neighbours (texel_dilation.h); then, with `blockSide` > 0 (an atlas packed on
+// aligned 2 x 2 blocks, PackOptions::mipBlocks: 2 for a map of the atlas' size, 2f for one f
+// times finer), the unpainted texels of every aligned blockSide x blockSide block with a painted
+// texel take the renormalised mean of its painted ones, so box-filtered mips down to the block's
+// never mix charts. 0: no block fill.
 // Texels are RGBA8 unit vectors (c + 1) / 2 * 255, rows from the top (image row height - 1 - y
 // holds state row y); the means decode (2 c - 255) / 255 in integers. Renormalised means of zero
 // length leave a texel unpainted (it keeps its colour). `state` marks painted texels with
@@ -16,6 +18,6 @@
 namespace voxelfair {
 
 void fillNormalGutter(int width, int height, std::vector<uint8_t> &state, std::vector<uint8_t> &rgba, int rings,
-                      bool blocks, int threads);
+                      int blockSide, int threads);
 
 }  // namespace voxelfair

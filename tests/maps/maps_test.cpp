@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <random>
 
@@ -150,9 +151,15 @@ TEST(NormalBake, NormalFieldsOnRandomPlanesReadBackThroughTheShaderFrame) {
         options.width = 256;
         options.height = trial % 3 == 2 ? 128 : 256;
         options.level = trial / 6;  // the last six at level 1: one texel per 2 x 2 block
+        // At level 0, half the trials at the atlas' size, half 4x finer (the default for a
+        // 256-texel atlas, NormalBakeOptions::minSide).
+        if (trial % 2 == 1)
+            options.minSide = 0;
+        const int scale = options.level == 0 && trial % 2 == 0 ? 4 : 1;
+        EXPECT_EQ(normalMapScale(options), scale);
         const NormalMap map = bakeNormalMap(view(fine), view(coarse), options);
-        EXPECT_EQ(map.width, 256 >> options.level);
-        EXPECT_EQ(map.height, options.height >> options.level);
+        EXPECT_EQ(map.width, (256 >> options.level) * scale);
+        EXPECT_EQ(map.height, (options.height >> options.level) * scale);
         EXPECT_EQ(map.texelsWithoutSource, 0u);
         // Texel centres inside coarse triangles: the decoded normal is the fine one there.
         double worst = 0;
@@ -242,6 +249,41 @@ TEST(NormalBake, RefusesEmptyOrBrokenInputWithAMessage) {
     EXPECT_EQ(bakeNormalMap(view(g), view(g), options).width, 8);
 }
 
+// The map's size rule (NormalBakeOptions::minSide): small atlases get a map 2x or 4x finer each
+// side, the least whose long side reaches 1024 texels; atlases of 1024 or more stay 1:1, as do
+// level 1 and minSide 0. Generated sides, square and not, either side the long one.
+TEST(NormalBake, SmallAtlasesGetAFinerMapLargeOnesKeepTheirSize) {
+    std::mt19937 rng(1313);
+    std::uniform_int_distribution<int> side(1, 4096);
+    for (int trial = 0; trial < 500; ++trial) {
+        NormalBakeOptions options;
+        options.width = side(rng), options.height = trial % 3 == 0 ? 0 : side(rng);
+        const int longSide = std::max(options.width, options.height);
+        const int scale = normalMapScale(options);
+        SCOPED_TRACE(std::to_string(options.width) + " x " + std::to_string(options.height));
+        if (longSide >= 1024)
+            EXPECT_EQ(scale, 1);
+        else if (longSide >= 512)
+            EXPECT_EQ(scale, 2);
+        else
+            EXPECT_EQ(scale, 4);  // at most 4x, even when the long side stays under 1024
+        options.minSide = 0;
+        EXPECT_EQ(normalMapScale(options), 1);
+        options.minSide = 1024, options.level = 1;
+        EXPECT_EQ(normalMapScale(options), 1);
+    }
+    // The baked map has those sides.
+    const PlaneGrid g = planeGrid(3, glm::mat3(1.0f), glm::vec3(0.0f), glm::mat2(1.0f), glm::vec2(0.0f));
+    for (const auto &[w, h, mapW, mapH] : {std::array<int, 4>{300, 150, 1200, 600}, {600, 0, 1200, 1200},
+                                           {1024, 512, 1024, 512}, {2048, 2048, 2048, 2048}}) {
+        NormalBakeOptions options;
+        options.width = w, options.height = h;
+        const NormalMap map = bakeNormalMap(view(g), view(g), options);
+        EXPECT_EQ(map.width, mapW);
+        EXPECT_EQ(map.height, mapH);
+    }
+}
+
 TEST(NormalBake, TheMapIsTheSameOnAnyNumberOfThreads) {
     std::mt19937 rng(1313);
     for (int trial = 0; trial < 4; ++trial) {
@@ -259,6 +301,7 @@ TEST(NormalBake, TheMapIsTheSameOnAnyNumberOfThreads) {
         options.width = 512;
         options.height = trial < 2 ? 512 : 256;
         options.level = trial % 2;
+        options.minSide = trial == 0 ? 1024 : 0;  // one 2x finer map
         options.threads = 1;
         const NormalMap one = bakeNormalMap(view(fine), view(coarse), options);
         for (int threads : {2, 3, 8}) {
@@ -274,14 +317,14 @@ TEST(NormalBake, TheMapIsTheSameOnAnyNumberOfThreads) {
 // Aligned 2 x 2 blocks of a width x height image (rows top down, RGBA) that mix texels `filled`
 // says are painted with texels it says are not.
 template <class Filled>
-int mixedBlocks(const std::vector<uint8_t> &rgba, int width, int height, Filled &&filled) {
+int mixedBlocks(const std::vector<uint8_t> &rgba, int width, int height, Filled &&filled, int side = 2) {
     int mixed = 0;
-    for (int y = 0; y + 1 < height; y += 2)
-        for (int x = 0; x + 1 < width; x += 2) {
+    for (int y = 0; y + side - 1 < height; y += side)
+        for (int x = 0; x + side - 1 < width; x += side) {
             int n = 0;
-            for (int k = 0; k < 4; ++k)
-                n += filled(&rgba[(size_t(y + k / 2) * size_t(width) + size_t(x + k % 2)) * 4]) ? 1 : 0;
-            mixed += n > 0 && n < 4 ? 1 : 0;
+            for (int k = 0; k < side * side; ++k)
+                n += filled(&rgba[(size_t(y + k / side) * size_t(width) + size_t(x + k % side)) * 4]) ? 1 : 0;
+            mixed += n > 0 && n < side * side ? 1 : 0;
         }
     return mixed;
 }
@@ -303,11 +346,18 @@ TEST(NormalBake, OnABlockAtlasEveryBlockAChartTouchesIsFilledAsTheBaseColoursIs)
         options.height = 64;
         auto painted = [](const uint8_t *p) { return !(p[0] == 128 && p[1] == 128 && p[2] == 255); };
         // Flipped rows keep blocks aligned only on even heights; the height is even.
-        const NormalMap filled = bakeNormalMap(view(fine), view(coarse), options);
-        EXPECT_EQ(mixedBlocks(filled.rgba, filled.width, filled.height, painted), 0);
-        options.blocks = false;
-        const NormalMap rings = bakeNormalMap(view(fine), view(coarse), options);
-        EXPECT_GT(mixedBlocks(rings.rgba, rings.width, rings.height, painted), 0);  // the test can tell
+        // At the atlas' size and 4x finer (the default for so small an atlas): the atlas' blocks
+        // are 2 x 2 texels of the one, 8 x 8 of the other.
+        for (const int minSide : {0, 1024}) {
+            options.minSide = minSide, options.blocks = true;
+            const int side = 2 * normalMapScale(options);
+            const NormalMap filled = bakeNormalMap(view(fine), view(coarse), options);
+            EXPECT_EQ(filled.width, options.width * side / 2);
+            EXPECT_EQ(mixedBlocks(filled.rgba, filled.width, filled.height, painted, side), 0);
+            options.blocks = false;
+            const NormalMap rings = bakeNormalMap(view(fine), view(coarse), options);
+            EXPECT_GT(mixedBlocks(rings.rgba, rings.width, rings.height, painted, side), 0);  // the test can tell
+        }
 
         // The per-face value maps (house mask, material maps) too: alpha 255 on charts and gutter.
         FaceValueMesh mesh;

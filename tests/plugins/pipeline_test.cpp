@@ -38,6 +38,7 @@ std::string pipelineScript(const std::string &dir, const std::string &texture, d
                                                           {"@DECIMATION@", std::to_string(decimation)},
                                                           {"@NORMAL_FILE@", dir + "/normal.png"},
                                                           {"@NORMAL_LEVEL@", "0"},
+                                                          {"@NORMAL_MIN_SIDE@", "1024"},
                                                           {"@BLOCKS@", "true"},
                                                           {"@HOUSE_FILE@", dir + "/house.png"},
                                                           {"@METAL_ROUGH_FILE@", dir + "/metallic_roughness.png"},
