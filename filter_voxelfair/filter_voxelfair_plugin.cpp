@@ -1,5 +1,7 @@
 #include "filter_voxelfair_plugin.h"
 
+#include "maps/normal_bake.h"
+
 #include <cstdio>
 #include <exception>
 #include <new>
@@ -261,7 +263,7 @@ void FilterVoxelfairPlugin::initParameterSet(QAction *action, MeshDocument &md, 
                                  "2 x 2 texel block of the atlas (its mip 1; the charts are packed on such blocks): a "
                                  "quarter of the texels, memory and baking time, for smooth surfaces that need no "
                                  "pixel-art resolution."));
-    parameters.addParam(RichInt("minSide", NormalBakeOptions().minSide, "Finer map for small atlases",
+    parameters.addParam(RichInt("minSide", voxelfair::NormalBakeOptions().minSide, "Finer map for small atlases",
                                 "At atlas size, a small atlas gets a finer normal map (same UVs): each side times 2 or "
                                 "4, the least that brings the long side to at least this many texels (atlases of "
                                 "1024 or more stay 1:1 at the default 1024); 0: the atlas' size. Not with a given "
