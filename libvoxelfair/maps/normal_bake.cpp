@@ -70,8 +70,7 @@ constexpr uint8_t kFromSource = 2;  // a state bit beside kTexelPainted (texel_d
 int normalMapScale(const NormalBakeOptions &options) {
     const int longSide = std::max(options.width, options.height);
     int scale = 1;
-    while (options.level == 0 && scale < 4 && longSide * scale < options.minSide &&
-           longSide * scale * 2 <= 16384)
+    while (options.level == 0 && scale < 4 && longSide * scale < options.minSide && longSide * scale * 2 <= 16384)
         scale *= 2;
     return scale;
 }
@@ -90,7 +89,8 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
     // f texels per atlas texel each side.
     const int scale = normalMapScale(options);
     const int width = ((options.width + options.level) >> options.level) * scale,
-              height = (((options.height > 0 ? options.height : options.width) + options.level) >> options.level) * scale;
+              height =
+                  (((options.height > 0 ? options.height : options.width) + options.level) >> options.level) * scale;
     const size_t texels = size_t(width) * size_t(height);
     out.width = width;
     out.height = height;

@@ -274,8 +274,10 @@ TEST(NormalBake, SmallAtlasesGetAFinerMapLargeOnesKeepTheirSize) {
     }
     // The baked map has those sides.
     const PlaneGrid g = planeGrid(3, glm::mat3(1.0f), glm::vec3(0.0f), glm::mat2(1.0f), glm::vec2(0.0f));
-    for (const auto &[w, h, mapW, mapH] : {std::array<int, 4>{300, 150, 1200, 600}, {600, 0, 1200, 1200},
-                                           {1024, 512, 1024, 512}, {2048, 2048, 2048, 2048}}) {
+    for (const auto &[w, h, mapW, mapH] : {std::array<int, 4>{300, 150, 1200, 600},
+                                           {600, 0, 1200, 1200},
+                                           {1024, 512, 1024, 512},
+                                           {2048, 2048, 2048, 2048}}) {
         NormalBakeOptions options;
         options.width = w, options.height = h;
         const NormalMap map = bakeNormalMap(view(g), view(g), options);

@@ -2,7 +2,8 @@
 // with MeshLab's quadric decimation with texture (vcg_quadric_tex.h), the shading normal with
 // the baked map applied is on average at most a third as far (in angle) from the undecimated
 // faired surface's normal as the decimated mesh's own vertex normals are (shading_error.h).
-// Also at level 1 (NormalBakeOptions::level: half each side). Prints the per-model figures the
+// At the shipped default size (NormalBakeOptions: small atlases get a 2x or 4x finer map) and
+// at level 1 (NormalBakeOptions::level: half each side). Prints the per-model figures the
 // README's table quotes. Needs ../shared/models (skips without) and vcglib.
 #include "pipeline/faired_models.h"
 #include "shading_error.h"
@@ -11,6 +12,7 @@
 
 #include <cstdio>
 #include <map>
+#include <utility>
 
 using namespace voxelfair;
 using namespace voxelfair::mapstest;
@@ -25,8 +27,13 @@ const std::filesystem::path kModels = VOXELFAIR_MODELS_DIR;
 // decimation keeps UV seams, so the charts shape what is left: with small charts merged into
 // their neighbours (atlas/chart_merge.h) rgb's 86 faces measure 0.69 (level 1: 0.72); with
 // source faces facing the target's shading normal only (surface_walk.h), 0.60 (0.64); with the
-// atlas' tighter fill and the fairing's two-scale drift removal, 0.41 (0.47).
-const std::map<std::string, double> kShortfalls = {{"ttnkbarl", 1.8}, {"rgb", 0.8}, {"simple", 0.45}};
+// atlas' tighter fill and the fairing's two-scale drift removal, 0.41 (0.47). The rest was the
+// map's resolution: with the default finer map for small atlases (NormalBakeOptions::minSide,
+// rgb's 256-texel atlas gets a 1024-texel map) rgb measures 0.314 (3 runs, the same figure) and
+// meets the goal at the shipped default; at level 1 (128 texels) it stays a shortfall.
+// Bounds: {the default size, level 1}.
+const std::map<std::string, std::pair<double, double>> kShortfalls = {
+    {"ttnkbarl", {1.8, 1.8}}, {"rgb", {1.0 / 3.0, 0.55}}, {"simple", {0.45, 0.45}}};
 }  // namespace
 
 TEST(NormalMapGoal, DecimatedToTenPercentEveryModelShadesWithinAThirdOfItsVertexNormalsError) {
@@ -49,7 +56,7 @@ TEST(NormalMapGoal, DecimatedToTenPercentEveryModelShadesWithinAThirdOfItsVertex
         const vcgdecimate::TexturedMesh lo = vcgdecimate::decimate(hi.positions, hi.triangles, hi.wedgeUv, 0.1);
         const NormalBakeMesh source = normalBakeMesh(hi.positions, hi.normals, hi.triangles, hi.wedgeUv);
         const NormalBakeMesh target = normalBakeMesh(lo.positions, lo.normals, lo.triangles, lo.wedgeUv);
-        NormalBakeOptions options;
+        NormalBakeOptions options;  // the shipped defaults (the filter's and the wrapper's)
         options.width = hi.textureWidth;
         options.height = hi.textureHeight;
         const NormalMap map = bakeNormalMap(source, target, options);
@@ -68,7 +75,8 @@ TEST(NormalMapGoal, DecimatedToTenPercentEveryModelShadesWithinAThirdOfItsVertex
             if (shortfall == kShortfalls.end())
                 EXPECT_LE(measured->mappedDegrees, measured->vertexNormalDegrees / 3.0);
             else
-                EXPECT_LE(measured->ratio(), shortfall->second) << "known shortfall, bounded as measured";
+                EXPECT_LE(measured->ratio(), measured == &e ? shortfall->second.first : shortfall->second.second)
+                    << "known shortfall, bounded as measured";
         }
     }
 }

@@ -82,6 +82,15 @@ class ConvertWrapper(unittest.TestCase):
         self.assertEqual((out / "tank_normal.png").read_bytes()[:8], b"\x89PNG\r\n\x1a\n")
         self.assertIn("map_Bump tank_normal.png", (out / "tank.obj.mtl").read_text())
         self.assertIn("Bake Normal Map:", output)
+        # By default a small atlas gets a finer normal map (2x or 4x each side, the least that brings
+        # the long side to 1024; NormalBakeOptions::minSide); the validator reads it below.
+        import struct
+        texture = struct.unpack(">II", (out / "tank_texture.png").read_bytes()[16:24])
+        scale = next(f for f in (1, 2, 4) if max(texture) * f >= 1024 or f == 4)
+        self.assertGreater(scale, 1, texture)  # the example tank's atlas is small: the test sees a finer map
+        self.assertEqual(struct.unpack(">II", (out / "tank_normal.png").read_bytes()[16:24]),
+                         (texture[0] * scale, texture[1] * scale))
+        self.assertIn(f"(x{scale})", output)
         # Matte: no specular highlight.
         self.assertIn("Ks 0.000000 0.000000 0.000000", (out / "tank.obj.mtl").read_text())
         self.assertNotIn("Ks 1", (out / "tank.obj.mtl").read_text())
@@ -91,7 +100,7 @@ class ConvertWrapper(unittest.TestCase):
         self.assertEqual(validator.returncode, 0, validator.stdout + validator.stderr)
         self.assertIn("0 errors, 0 warnings", validator.stdout)
         # The decimated mesh's normal map and the MikkTSpace tangents it was baked against.
-        import json, struct
+        import json
         data = (out / "tank.glb").read_bytes()
         gltf = json.loads(data[20:20 + struct.unpack("<I", data[12:16])[0]])
         self.assertIn("normalTexture", gltf["materials"][0])
