@@ -10,6 +10,7 @@
 #include "maps/texel_frames.h"
 #include "maps/uv_face_index.h"
 #include "maps/normal_gutter.h"
+#include "fairing/simd_variant.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,6 +18,10 @@
 #include <future>
 
 #include <glm/geometric.hpp>
+
+#if VOXELFAIR_SSE2
+#include <emmintrin.h>
+#endif
 
 namespace voxelfair {
 
@@ -64,6 +69,47 @@ namespace {
 
 constexpr int kBandRows = 32;
 constexpr uint8_t kFromSource = 2;  // a state bit beside kTexelPainted (texel_dilation.h)
+
+#if VOXELFAIR_SSE2
+// SurfaceWalk::holds() and normalAt() on source face `face` for 4 texels of a row at once, lane k
+// at weights (l1[k], l2[k]) on the target face (corner 0 at o, edges e1, e2, corner normals tn).
+// Each lane repeats the scalar path's float operations in its order (p = o + l1 e1 + l2 e2,
+// facing = l0 tn0 + l1 tn1 + l2 tn2, dot products summed x + y + z), so that the answers and the
+// normals are the scalar build's bit for bit. Bit k of the result: lane k holds; n[a][k] gets
+// lane k's interpolated source normal.
+int holdsQuad(const SurfaceWalk &walk, uint32_t face, const float *l1, const float *l2, const glm::vec3 &o,
+              const glm::vec3 &e1, const glm::vec3 &e2, const glm::vec3 *tn, float n[3][4]) {
+    const SurfaceWalk::Face &f = walk.record(face);
+    auto all = [](float v) { return _mm_set1_ps(v); };
+    const __m128 L1 = _mm_loadu_ps(l1), L2 = _mm_loadu_ps(l2), one = all(1.0f), zero = _mm_setzero_ps();
+    const __m128 L0 = _mm_sub_ps(_mm_sub_ps(one, L1), L2);
+    __m128 d[3], facing[3];
+    for (int a = 0; a < 3; ++a) {
+        const __m128 p = _mm_add_ps(_mm_add_ps(all(o[a]), _mm_mul_ps(L1, all(e1[a]))), _mm_mul_ps(L2, all(e2[a])));
+        d[a] = _mm_sub_ps(p, all(f.origin[a]));
+        facing[a] = _mm_add_ps(_mm_add_ps(_mm_mul_ps(L0, all(tn[0][a])), _mm_mul_ps(L1, all(tn[1][a]))),
+                               _mm_mul_ps(L2, all(tn[2][a])));
+    }
+    auto dot = [&](const glm::vec3 &v) {  // dot(d, v)
+        return _mm_add_ps(_mm_add_ps(_mm_mul_ps(d[0], all(v.x)), _mm_mul_ps(d[1], all(v.y))),
+                          _mm_mul_ps(d[2], all(v.z)));
+    };
+    const __m128 w1 = dot(f.dual1), w2 = dot(f.dual2), height = dot(f.normal);
+    const __m128 w0 = _mm_sub_ps(_mm_sub_ps(one, w1), w2);
+    const __m128 faces =
+        _mm_add_ps(_mm_add_ps(_mm_mul_ps(all(f.normal.x), facing[0]), _mm_mul_ps(all(f.normal.y), facing[1])),
+                   _mm_mul_ps(all(f.normal.z), facing[2]));
+    const __m128 inside =
+        _mm_and_ps(_mm_and_ps(_mm_cmpge_ps(w0, zero), _mm_cmpge_ps(w1, zero)), _mm_cmpge_ps(w2, zero));
+    const __m128 ok = _mm_and_ps(_mm_and_ps(inside, _mm_cmple_ps(_mm_mul_ps(height, height), all(f.nearPlane))),
+                                 _mm_cmpgt_ps(faces, zero));
+    const glm::vec3 *cn = walk.cornerNormals(face);
+    for (int a = 0; a < 3; ++a)
+        _mm_storeu_ps(n[a], _mm_add_ps(_mm_add_ps(_mm_mul_ps(w0, all(cn[0][a])), _mm_mul_ps(w1, all(cn[1][a]))),
+                                       _mm_mul_ps(w2, all(cn[2][a]))));
+    return _mm_movemask_ps(ok);
+}
+#endif
 
 }  // namespace
 
@@ -208,12 +254,13 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
             // under its UV (the UV grid's nearest where none is).
             uint32_t hitFace = UINT32_MAX, rowFace = UINT32_MAX;
             // The source normal at texel (x, y) with weights l1, l2; false when no source face is near.
-            auto sourceNormal = [&](int x, int y, float l1, float l2, glm::vec3 &n) {
+            // `tried`: the texel is known not to be on hitFace (holdsQuad said so).
+            auto sourceNormal = [&](int x, int y, float l1, float l2, glm::vec3 &n, bool tried) {
                 const glm::vec3 p = tp[0] + l1 * e1 + l2 * e2;
                 const float l0 = 1.0f - l1 - l2;
                 const glm::vec3 facing = l0 * tn[0] + l1 * tn[1] + l2 * tn[2];
                 glm::vec3 weights;
-                if (hitFace != UINT32_MAX && walk->holds(p, hitFace, facing, weights)) {
+                if (!tried && hitFace != UINT32_MAX && walk->holds(p, hitFace, facing, weights)) {
                     n = walk->normalAt(hitFace, weights);
                     return true;
                 }
@@ -241,9 +288,9 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
                 const double py = y + 0.5 - q[0].y;
                 hitFace = rowFace;
                 bool first = true;
-                auto visit = [&](int x, float l1, float l2) {
+                auto visit = [&](int x, float l1, float l2, bool tried = false) {
                     glm::vec3 n(0.0f);
-                    if (!sourceNormal(x, y, l1, l2, n))
+                    if (!sourceNormal(x, y, l1, l2, n, tried))
                         n = glm::vec3(0.0f);
                     if (first)
                         rowFace = hitFace, first = false;
@@ -270,8 +317,33 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
                 if (centres) {
                     const double px = zl + 0.5 - q[0].x;
                     double l1 = a1 * px + b1 * py, l2 = a2 * px + b2 * py;
-                    for (int x = zl; x <= zr; ++x, l1 += a1, l2 += a2)
+                    for (int x = zl; x <= zr;) {
+#if VOXELFAIR_SSE2
+                        // 4 texels at once against the face of the texel before them (the fast
+                        // path): the ones up to the first that is not on it are done.
+                        if (hitFace != UINT32_MAX && x + 3 <= zr) {
+                            float f1[4], f2[4], n[3][4];
+                            double m1 = l1, m2 = l2;
+                            for (int k = 0; k < 4; ++k, m1 += a1, m2 += a2)
+                                f1[k] = float(m1), f2[k] = float(m2);
+                            const int held = holdsQuad(*walk, hitFace, f1, f2, tp[0], e1, e2, tn, n);
+                            int k = 0;
+                            for (; k < 4 && (held >> k & 1); ++k, ++x, l1 += a1, l2 += a2) {
+                                if (first)
+                                    rowFace = hitFace, first = false;
+                                batch.push(f1[k], f2[k], glm::vec3(n[0][k], n[1][k], n[2][k]), stateRow + uint32_t(x),
+                                           imageRow + uint32_t(x));
+                            }
+                            if (k < 4) {
+                                visit(x, f1[k], f2[k], true);
+                                ++x, l1 += a1, l2 += a2;
+                            }
+                            continue;
+                        }
+#endif
                         visit(x, float(l1), float(l2));
+                        ++x, l1 += a1, l2 += a2;
+                    }
                     for (int x = std::max(zr + 1, cl); x <= cr; ++x)
                         overlap(x);
                 }

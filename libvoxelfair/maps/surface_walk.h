@@ -104,7 +104,6 @@ public:
 #endif
     }
 
-private:
     // Everything a step reads, in one 64-byte record per face: weights 1, 2 = dot(p - origin,
     // dual1/2), the unit normal, the squared height under which a projection inside is kept, and
     // the half-edges across each edge (3f + i -> the other face's half-edge).
@@ -113,6 +112,11 @@ private:
         float nearPlane;
         uint32_t opposite[3];
     };
+    // A face's record and its 3 corner normals, for a caller's own (vectorised) holds().
+    const Face &record(uint32_t face) const { return faces_[face]; }
+    const glm::vec3 *cornerNormals(uint32_t face) const { return &cornerNormals_[3 * size_t(face)]; }
+
+private:
     Hit closestAround(const glm::vec3 &p, uint32_t face, const glm::vec3 &facing) const;
     std::vector<Face> faces_;
     std::vector<glm::vec3> cornerNormals_;  // 3 per face
