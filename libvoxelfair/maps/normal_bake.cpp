@@ -77,18 +77,29 @@ constexpr uint8_t kFromSource = 2;  // a state bit beside kTexelPainted (texel_d
 // facing = l0 tn0 + l1 tn1 + l2 tn2, dot products summed x + y + z), so that the answers and the
 // normals are the scalar build's bit for bit. Bit k of the result: lane k holds; n[a][k] gets
 // lane k's interpolated source normal.
-int holdsQuad(const SurfaceWalk &walk, uint32_t face, const float *l1, const float *l2, const glm::vec3 &o,
-              const glm::vec3 &e1, const glm::vec3 &e2, const glm::vec3 *tn, float n[3][4]) {
+// The target face's corner 0, edges and corner normals, each coordinate in all 4 lanes.
+struct QuadTarget {
+    __m128 o[3], e1[3], e2[3], tn[3][3];
+    QuadTarget(const glm::vec3 &origin, const glm::vec3 &edge1, const glm::vec3 &edge2, const glm::vec3 *normals) {
+        for (int a = 0; a < 3; ++a) {
+            o[a] = _mm_set1_ps(origin[a]), e1[a] = _mm_set1_ps(edge1[a]), e2[a] = _mm_set1_ps(edge2[a]);
+            for (int k = 0; k < 3; ++k)
+                tn[k][a] = _mm_set1_ps(normals[k][a]);
+        }
+    }
+};
+int holdsQuad(const SurfaceWalk &walk, uint32_t face, const float *l1, const float *l2, const QuadTarget &t,
+              float n[3][4]) {
     const SurfaceWalk::Face &f = walk.record(face);
     auto all = [](float v) { return _mm_set1_ps(v); };
     const __m128 L1 = _mm_loadu_ps(l1), L2 = _mm_loadu_ps(l2), one = all(1.0f), zero = _mm_setzero_ps();
     const __m128 L0 = _mm_sub_ps(_mm_sub_ps(one, L1), L2);
     __m128 d[3], facing[3];
     for (int a = 0; a < 3; ++a) {
-        const __m128 p = _mm_add_ps(_mm_add_ps(all(o[a]), _mm_mul_ps(L1, all(e1[a]))), _mm_mul_ps(L2, all(e2[a])));
+        const __m128 p = _mm_add_ps(_mm_add_ps(t.o[a], _mm_mul_ps(L1, t.e1[a])), _mm_mul_ps(L2, t.e2[a]));
         d[a] = _mm_sub_ps(p, all(f.origin[a]));
-        facing[a] = _mm_add_ps(_mm_add_ps(_mm_mul_ps(L0, all(tn[0][a])), _mm_mul_ps(L1, all(tn[1][a]))),
-                               _mm_mul_ps(L2, all(tn[2][a])));
+        facing[a] =
+            _mm_add_ps(_mm_add_ps(_mm_mul_ps(L0, t.tn[0][a]), _mm_mul_ps(L1, t.tn[1][a])), _mm_mul_ps(L2, t.tn[2][a]));
     }
     auto dot = [&](const glm::vec3 &v) {  // dot(d, v)
         return _mm_add_ps(_mm_add_ps(_mm_mul_ps(d[0], all(v.x)), _mm_mul_ps(d[1], all(v.y))),
@@ -240,6 +251,9 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
                 w += out.cornerTangents[3 * f + size_t(k)].w;
             }
             const glm::vec3 e1 = tp[1] - tp[0], e2 = tp[2] - tp[0];
+#if VOXELFAIR_SSE2
+            const QuadTarget quadTarget(tp[0], e1, e2, tn);
+#endif
             const float sign = w < 0.0f ? -1.0f : 1.0f;
             TargetFrame targetFrame;
             for (int k = 0; k < 3; ++k)
@@ -326,7 +340,7 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
                             double m1 = l1, m2 = l2;
                             for (int k = 0; k < 4; ++k, m1 += a1, m2 += a2)
                                 f1[k] = float(m1), f2[k] = float(m2);
-                            const int held = holdsQuad(*walk, hitFace, f1, f2, tp[0], e1, e2, tn, n);
+                            const int held = holdsQuad(*walk, hitFace, f1, f2, quadTarget, n);
                             int k = 0;
                             for (; k < 4 && (held >> k & 1); ++k, ++x, l1 += a1, l2 += a2) {
                                 if (first)
