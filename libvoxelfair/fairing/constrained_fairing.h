@@ -60,7 +60,7 @@
 #pragma once
 
 #include "fairing/lanczos_fairing.h"  // FairingStatus
-#include "fairing/simd_variant.h"
+#include "base/simd_variant.h"
 
 #include <cstddef>
 #include <cstdint>

@@ -1,4 +1,4 @@
-// The constrained fairing's two variants (fairing/simd_variant.h), linked side by side: the SSE2
+// The constrained fairing's two variants (base/simd_variant.h), linked side by side: the SSE2
 // kernels and the scalar code give the same surface up to float rounding. The SIMD kernels sum in
 // another order, and 16 Gauss-Seidel sweeps over two passes carry those last-bit differences on,
 // so the check is on positions, not bits: every vertex within kTolerance voxel of the other

@@ -1,5 +1,5 @@
 // Vector primitives of the constrained fairing, in SSE2 where the target has it and in plain GLM
-// otherwise (fairing/simd_variant.h chooses).
+// otherwise (base/simd_variant.h chooses).
 //
 // Contract: every SSE2 function gives bit for bit the result of the GLM expression it stands for
 // (same operations in the same order: dot = (x x + y y) + z z, cross as glm::cross, normalize as
@@ -15,7 +15,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-#include "fairing/simd_variant.h"
+#include "base/simd_variant.h"
 #include "mesh/vector_helpers.h"
 
 #ifdef VOXELFAIR_SSE2
