@@ -226,12 +226,13 @@ TightPacking packTight(const ChartMasks &masks, int side, int height, bool allow
     // Small charts go in as their bounding boxes, in two turns. Where the search for a box size
     // ended is a lower bound for the next box of that size, as the atlas only fills up: each
     // size scans the atlas at most once in all, which keeps thousands of micro charts cheap.
-    const int64_t shapedArea = int64_t(side) * height / 1024;
-    std::unordered_map<uint32_t, std::pair<int, int>> boxCursor;  // (width << 16 | height) -> (y, x)
     // Small charts with a bitmap go in by their shape, their search resumed the same way per
     // turned size (a heuristic for them: another shape of that size may fit lower).
-    std::unordered_map<uint64_t, std::pair<int, int>> shapeCursor;
-    auto boxed = [&](uint32_t c) { return area(c) < shapedArea && !(bitmaps && bitmaps->has(c)); };
+    // (width << 32 | height << 8 | turns, or kBoxKey for a box) -> (y, x)
+    const int64_t shapedArea = int64_t(side) * height / 1024;
+    constexpr uint64_t kBoxKey = 4;
+    std::unordered_map<uint64_t, std::pair<int, int>> cursors;
+    auto boxed = [&](uint32_t c) { return packedAsBox(area(c), side, height, bitmaps && bitmaps->has(c)); };
 
     // The room the charts will take (boxes, or row spans) cannot exceed the atlas.
     int64_t needed = 0;
@@ -265,16 +266,10 @@ TightPacking packTight(const ChartMasks &masks, int side, int height, bool allow
                 continue;
             int y = std::max(0, runs.firstRow(shape.spans[0].length) - shape.spans[0].row), x = 0;
             std::pair<int, int> *cursor = nullptr;
-            if (box) {
-                cursor =
-                    &boxCursor.try_emplace(uint32_t(shape.width) << 16 | uint32_t(shape.height), 0, 0).first->second;
-                if (cursor->first >= y)
-                    std::tie(y, x) = *cursor;
-            } else if (small) {
-                cursor =
-                    &shapeCursor
-                         .try_emplace(uint64_t(shape.width) << 32 | uint64_t(shape.height) << 8 | uint64_t(turns), 0, 0)
-                         .first->second;
+            if (small) {  // boxes are small too
+                const uint64_t key =
+                    uint64_t(shape.width) << 32 | uint64_t(shape.height) << 8 | (box ? kBoxKey : uint64_t(turns));
+                cursor = &cursors.try_emplace(key, 0, 0).first->second;
                 if (cursor->first >= y)
                     std::tie(y, x) = *cursor;
             }

@@ -16,6 +16,7 @@
 #include "atlas/chart_bitmaps.h"
 #include "atlas/chart_masks.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace voxelfair {
@@ -30,8 +31,14 @@ struct TightPacking {
     int top = 0;
 };
 
+// Whether packTight places a chart as its bounding box: a mask of `maskArea` texels under 1/1024
+// of the side x height rectangle, without a bitmap (the paper's micro partitions, above).
+inline bool packedAsBox(int64_t maskArea, int side, int height, bool hasBitmap) {
+    return !hasBitmap && maskArea < int64_t(side) * height / 1024;
+}
+
 // Packs into a side x height rectangle, side the width (both <= 16383). Charts with a bitmap
-// (and not small enough to go in as boxes) leave the holes inside their rows free.
+// leave the holes inside their rows free.
 TightPacking packTight(const ChartMasks &masks, int side, int height, bool allowTurns,
                        std::vector<ChartPlacement> &placements, const ChartBitmaps *bitmaps = nullptr);
 

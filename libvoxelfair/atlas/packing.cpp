@@ -109,15 +109,14 @@ constexpr double kLeastFillGain = 1.04;
 double fillScale(const Packing &packing, int side, int height, double efficiency, double ceiling) {
     const ChartMasks &masks = packing.packed();
     const int b = packing.block;
-    side /= b, height /= b;                               // in mask units
-    const int64_t boxed = int64_t(side) * height / 1024;  // as pack_tight.cpp
+    side /= b, height /= b;  // in mask units
     const double rim = (2.0 * masks.padding + b) / b;
     // Each chart's room now: its box when packed as one (small, no bitmap), else its bitmap's blocks or its rows' spans.
     std::vector<double> now(masks.charts.size());
     for (size_t c = 0; c < masks.charts.size(); ++c) {
         const ChartMask &m = masks.charts[c];
         now[c] = double(m.width) * m.height;
-        if (int64_t(m.width) * m.height < boxed && !(b > 1 && packing.bitmaps.has(c)))
+        if (packedAsBox(int64_t(m.width) * m.height, side, height, b > 1 && packing.bitmaps.has(c)))
             continue;
         now[c] = 0;
         if (b > 1 && packing.bitmaps.has(c)) {

@@ -89,20 +89,6 @@ public:
         const glm::vec3 *n = &cornerNormals_[3 * size_t(face)];
         return w.x * n[0] + w.y * n[1] + w.z * n[2];
     }
-    // Asks the memory system for faces [first, last)'s records ahead of a walk among them (the
-    // walk's loads depend on each other; fetched ahead, their misses overlap).
-    void prefetch(uint32_t first, uint32_t last) const {
-#if defined(__GNUC__)
-        for (uint32_t f = first; f < last; ++f)
-            __builtin_prefetch(&faces_[f]);
-        const char *n = reinterpret_cast<const char *>(cornerNormals_.data() + 3 * size_t(first)),
-                   *end = reinterpret_cast<const char *>(cornerNormals_.data() + 3 * size_t(last));
-        for (; n < end; n += 64)
-            __builtin_prefetch(n);
-#else
-        (void)first, (void)last;
-#endif
-    }
 
     // Everything a step reads, in one 64-byte record per face: weights 1, 2 = dot(p - origin,
     // dual1/2), the unit normal, the squared height under which a projection inside is kept, and
