@@ -118,14 +118,8 @@ inline std::string familyPictures(const std::filesystem::path &folder, int size)
         seen.push_back(f.family);
         const VoxelVolume volume = shapes::voxelize(f.shape);
         const BoundarySurface surface = extractBoundarySurface(volume);
-        std::vector<uint32_t> offsets(surface.quadCount() + 1);
-        for (size_t q = 0; q < offsets.size(); ++q)
-            offsets[q] = uint32_t(4 * q);
-        std::vector<uint32_t> triangles(3 *
-                                        countFanTriangles({nullptr, 0, offsets.data(), nullptr, surface.quadCount()}));
-        triangulatePolygons(
-            {nullptr, surface.positions.size(), offsets.data(), surface.quads.data(), surface.quadCount()},
-            triangles.data(), nullptr);
+        const comparison::QuadFan fan = comparison::quadFan(surface);
+        const std::vector<uint32_t> &offsets = fan.offsets, &triangles = fan.triangles;
         std::vector<std::pair<std::string, std::pair<std::vector<glm::vec3>, std::vector<uint32_t>>>> panels;
         panels.push_back({"raw voxels", {surface.positions, triangles}});
 #ifdef VOXELFAIR_HAVE_VTK

@@ -97,6 +97,25 @@ inline constexpr const char kRawMethod[] = "raw voxels", kPaperMethod[] = "paper
                             kTaubinMethod[] = "vcg Taubin (10)", kHcMethod[] = "vcg HC Laplacian",
                             kTwoStepMethod[] = "vcg TwoStep", kVtkMethod[] = "VTK windowed sinc";
 
+// A voxel boundary's quads as the library's polygon view takes them (quad q is corners 4q .. 4q+3,
+// mesh/polygon_mesh.h) and their fan triangles (attributes/triangulate.h): the mesh every smoother
+// moves and every row is measured on.
+struct QuadFan {
+    std::vector<uint32_t> offsets, triangles;
+};
+
+inline QuadFan quadFan(const BoundarySurface &surface) {
+    const size_t quadCount = surface.quadCount();
+    QuadFan fan;
+    fan.offsets.resize(quadCount + 1);
+    for (size_t q = 0; q <= quadCount; ++q)
+        fan.offsets[q] = uint32_t(4 * q);
+    fan.triangles.resize(3 * countFanTriangles({nullptr, 0, fan.offsets.data(), nullptr, quadCount}));
+    triangulatePolygons({nullptr, surface.positions.size(), fan.offsets.data(), surface.quads.data(), quadCount},
+                        fan.triangles.data(), nullptr);
+    return fan;
+}
+
 // Raw voxel surface, one default pass of the paper's fairing, (with vcglib) MeshLab's Taubin, HC
 // Laplacian and TwoStep Smooth with their defaults on the same triangulation, (with VTK) VTK's
 // windowed sinc on its own marching-cubes surface, and the second mode with its defaults.
@@ -104,12 +123,8 @@ inline std::vector<Row> compare(const shapes::Shape &shape, const Options &optio
     const VoxelVolume volume = shapes::voxelize(shape);
     const BoundarySurface surface = extractBoundarySurface(volume);
     const size_t quadCount = surface.quadCount();
-    std::vector<uint32_t> offsets(quadCount + 1);
-    for (size_t q = 0; q <= quadCount; ++q)
-        offsets[q] = uint32_t(4 * q);
-    std::vector<uint32_t> triangles(3 * countFanTriangles({nullptr, 0, offsets.data(), nullptr, quadCount}));
-    triangulatePolygons({nullptr, surface.positions.size(), offsets.data(), surface.quads.data(), quadCount},
-                        triangles.data(), nullptr);
+    const QuadFan fan = quadFan(surface);
+    const std::vector<uint32_t> &offsets = fan.offsets, &triangles = fan.triangles;
 
     std::vector<Row> rows;
     auto measure = [&](const char *method, const std::vector<glm::vec3> &positions) {

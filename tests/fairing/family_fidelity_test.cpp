@@ -85,12 +85,8 @@ Measured measure(const shapes::Shape &shape) {
     const VoxelVolume volume = shapes::voxelize(shape);
     const BoundarySurface surface = extractBoundarySurface(volume);
     const size_t quadCount = surface.quadCount();
-    std::vector<uint32_t> offsets(quadCount + 1);
-    for (size_t q = 0; q <= quadCount; ++q)
-        offsets[q] = uint32_t(4 * q);
-    std::vector<uint32_t> triangles(3 * countFanTriangles({nullptr, 0, offsets.data(), nullptr, quadCount}));
-    triangulatePolygons({nullptr, surface.positions.size(), offsets.data(), surface.quads.data(), quadCount},
-                        triangles.data(), nullptr);
+    const comparison::QuadFan fan = comparison::quadFan(surface);
+    const std::vector<uint32_t> &offsets = fan.offsets, &triangles = fan.triangles;
     const size_t samples = 20000;
     Measured m;
     m.raw = shapes::measureSurfaceError(surface.positions, triangles, shape, samples);
@@ -175,9 +171,7 @@ TEST(FairingFamilies, PlaneStageFindsFlatFacesAndNoneOnSpheres) {
     planes.fitPlanes = true;
     auto run = [](const shapes::Shape &shape, const ConstrainedFairingOptions &options) {
         const BoundarySurface surface = extractBoundarySurface(shapes::voxelize(shape));
-        std::vector<uint32_t> offsets(surface.quadCount() + 1);
-        for (size_t q = 0; q < offsets.size(); ++q)
-            offsets[q] = uint32_t(4 * q);
+        const std::vector<uint32_t> offsets = comparison::quadFan(surface).offsets;
         std::vector<glm::vec3> positions = surface.positions;
         return fairConstrained(
             {positions.data(), positions.size(), offsets.data(), surface.quads.data(), surface.quadCount()}, nullptr,
@@ -204,14 +198,8 @@ TEST(FairingFamilies, PlaneStageFindsFlatFacesAndNoneOnSpheres) {
     double rms[2];
     for (int withPlanes = 0; withPlanes < 2; ++withPlanes) {
         const BoundarySurface surface = extractBoundarySurface(shapes::voxelize(large));
-        std::vector<uint32_t> offsets(surface.quadCount() + 1);
-        for (size_t q = 0; q < offsets.size(); ++q)
-            offsets[q] = uint32_t(4 * q);
-        std::vector<uint32_t> triangles(3 *
-                                        countFanTriangles({nullptr, 0, offsets.data(), nullptr, surface.quadCount()}));
-        triangulatePolygons(
-            {nullptr, surface.positions.size(), offsets.data(), surface.quads.data(), surface.quadCount()},
-            triangles.data(), nullptr);
+        const comparison::QuadFan fan = comparison::quadFan(surface);
+        const std::vector<uint32_t> &offsets = fan.offsets, &triangles = fan.triangles;
         std::vector<glm::vec3> positions = surface.positions;
         ConstrainedFairingOptions options;
         options.fitPlanes = withPlanes != 0;
