@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <memory>
 #include <future>
 
@@ -75,8 +76,8 @@ constexpr uint8_t kFromSource = 2;  // a state bit beside kTexelPainted (texel_d
 // at weights (l1[k], l2[k]) on the target face (corner 0 at o, edges e1, e2, corner normals tn).
 // Each lane repeats the scalar path's float operations in its order (p = o + l1 e1 + l2 e2,
 // facing = l0 tn0 + l1 tn1 + l2 tn2, dot products summed x + y + z), so that the answers and the
-// normals are the scalar build's bit for bit. Bit k of the result: lane k holds; n[a][k] gets
-// lane k's interpolated source normal.
+// normals are the scalar build's bit for bit. Bit k of the result: lane k holds; lane k of n[a]
+// gets its interpolated source normal.
 // The target face's corner 0, edges and corner normals, each coordinate in all 4 lanes.
 struct QuadTarget {
     __m128 o[3], e1[3], e2[3], tn[3][3];
@@ -88,11 +89,10 @@ struct QuadTarget {
         }
     }
 };
-int holdsQuad(const SurfaceWalk &walk, uint32_t face, const float *l1, const float *l2, const QuadTarget &t,
-              float n[3][4]) {
+int holdsQuad(const SurfaceWalk &walk, uint32_t face, __m128 L1, __m128 L2, const QuadTarget &t, __m128 n[3]) {
     const SurfaceWalk::Face &f = walk.record(face);
     auto all = [](float v) { return _mm_set1_ps(v); };
-    const __m128 L1 = _mm_loadu_ps(l1), L2 = _mm_loadu_ps(l2), one = all(1.0f), zero = _mm_setzero_ps();
+    const __m128 one = all(1.0f), zero = _mm_setzero_ps();
     const __m128 L0 = _mm_sub_ps(_mm_sub_ps(one, L1), L2);
     __m128 d[3], facing[3];
     for (int a = 0; a < 3; ++a) {
@@ -116,8 +116,8 @@ int holdsQuad(const SurfaceWalk &walk, uint32_t face, const float *l1, const flo
                                  _mm_cmpgt_ps(faces, zero));
     const glm::vec3 *cn = walk.cornerNormals(face);
     for (int a = 0; a < 3; ++a)
-        _mm_storeu_ps(n[a], _mm_add_ps(_mm_add_ps(_mm_mul_ps(w0, all(cn[0][a])), _mm_mul_ps(w1, all(cn[1][a]))),
-                                       _mm_mul_ps(w2, all(cn[2][a]))));
+        n[a] = _mm_add_ps(_mm_add_ps(_mm_mul_ps(w0, all(cn[0][a])), _mm_mul_ps(w1, all(cn[1][a]))),
+                          _mm_mul_ps(w2, all(cn[2][a])));
     return _mm_movemask_ps(ok);
 }
 #endif
@@ -204,40 +204,27 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
     }
     const size_t bandCount = bands.start.size() - 1;
     std::vector<size_t> baked(bandCount, 0), flat(bandCount, 0);
-    // Per thread: the band's source faces under the texel centres, the triangle's texels.
-    struct Scratch {
-        std::vector<uint32_t> under;
-        TexelBatch batch;
-    };
-    std::vector<Scratch> scratch(size_t(bandThreads(options.threads, bandCount)));
+    // Per thread: the band's source faces under the texel centres.
+    std::vector<std::vector<uint32_t>> scratch(size_t(bandThreads(options.threads, bandCount)));
     runWorkerBands(bandCount, options.threads, [&](size_t band, int worker) {
         const int r0 = int(band) * kBandRows, r1 = std::min(height, r0 + kBandRows);
-        uint8_t *const rgba = out.rgba.data();
+        uint32_t *const rgba = reinterpret_cast<uint32_t *>(out.rgba.data());
         uint8_t *const states = state.data();
         // Flat normal (128, 128, 255) on the band's rows (image rows height - r1 .. height - 1 - r0).
-        std::fill(reinterpret_cast<uint32_t *>(rgba) + size_t(height - r1) * size_t(width),
-                  reinterpret_cast<uint32_t *>(rgba) + size_t(height - r0) * size_t(width),
+        std::fill(rgba + size_t(height - r1) * size_t(width), rgba + size_t(height - r0) * size_t(width),
                   0xFFFF8080u);  // bytes 128, 128, 255, 255
         glm::dvec2 q[3];
         // The source face under each texel centre of the band (its UV triangle holds the centre).
-        std::vector<uint32_t> &under = scratch[size_t(worker)].under;
+        std::vector<uint32_t> &under = scratch[size_t(worker)];
         under.assign(size_t(r1 - r0) * size_t(width), UINT32_MAX);
         for (uint32_t i = sourceBands.start[band]; i < sourceBands.start[band + 1]; ++i)
             fillFacesUnder(sorted->mesh, sourceBands.faces[i], width, height, r0, r1, under.data());
-        TexelBatch &batch = scratch[size_t(worker)].batch;
         for (uint32_t i = bands.start[band]; i < bands.start[band + 1]; ++i) {
             const size_t f = bands.faces[i];
             loadUv(target, f, width, height, q);
             const double d = doubleArea(q[0], q[1], q[2]);
             if (!(d != 0) || !std::isfinite(d))
                 continue;
-            // Room for the texels of the triangle's box within the band (one ring wider: overlaps).
-            {
-                const glm::dvec2 lo = glm::min(q[0], glm::min(q[1], q[2])), hi = glm::max(q[0], glm::max(q[1], q[2]));
-                const double rows = std::min(hi.y, double(r1)) - std::max(lo.y, double(r0)) + 3,
-                             columns = std::min(hi.x, double(width)) - std::max(lo.x, 0.0) + 3;
-                batch.reserve(size_t(std::max(rows, 0.0)) * size_t(std::max(columns, 0.0)));
-            }
             // Barycentric weights as affine functions of the texel centre: l = l0 + lx x + ly y.
             const double a1 = (q[2].y - q[0].y) / d, b1 = -(q[2].x - q[0].x) / d;
             const double a2 = -(q[1].y - q[0].y) / d, b2 = (q[1].x - q[0].x) / d;
@@ -251,15 +238,16 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
                 w += out.cornerTangents[3 * f + size_t(k)].w;
             }
             const glm::vec3 e1 = tp[1] - tp[0], e2 = tp[2] - tp[0];
-#if VOXELFAIR_SSE2
-            const QuadTarget quadTarget(tp[0], e1, e2, tn);
-#endif
             const float sign = w < 0.0f ? -1.0f : 1.0f;
             TargetFrame targetFrame;
             for (int k = 0; k < 3; ++k)
                 for (int a = 0; a < 3; ++a)
                     targetFrame.n[k][a] = tn[k][a], targetFrame.t[k][a] = tt[k][a];
             targetFrame.sign = sign;
+#if VOXELFAIR_SSE2
+            const QuadTarget quadTarget(tp[0], e1, e2, tn);
+            const FrameLanes frameLanes(targetFrame);
+#endif
             // The texels are visited row by row, left to right. A texel's source point is most
             // often on the face of the texel before it (checked first), else on the source face
             // under its UV (the atlas' correspondence); failing both, the walk starts from the
@@ -293,84 +281,112 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
                 n = walk->normalAt(hit);
                 return true;
             };
-            batch.size = 0;
-            rasterRows(q[0], q[1], q[2], kMargin, width, height, [&](int y, int cl, int cr, int zl, int zr) {
-                if (y < r0 || y >= r1)
-                    return;
-                const uint32_t stateRow = uint32_t(y) * uint32_t(width),
-                               imageRow = uint32_t(height - 1 - y) * uint32_t(width);
-                const double py = y + 0.5 - q[0].y;
-                hitFace = rowFace;
-                bool first = true;
-                auto visit = [&](int x, float l1, float l2, bool tried = false) {
-                    glm::vec3 n(0.0f);
-                    if (!sourceNormal(x, y, l1, l2, n, tried))
-                        n = glm::vec3(0.0f);
-                    if (first)
-                        rowFace = hitFace, first = false;
-                    batch.push(l1, l2, n, stateRow + uint32_t(x), imageRow + uint32_t(x));
-                };
-                // Texels the triangle only overlaps, if no centre claimed them (no centre of this
-                // face lies among them, so gathering them with the centres keeps the order of
-                // claims): weights clamped onto it.
-                auto overlap = [&](int x) {
-                    if (states[stateRow + uint32_t(x)] != 0)
-                        return;
-                    const double px = x + 0.5 - q[0].x;
-                    float l1 = float(a1 * px + b1 * py), l2 = float(a2 * px + b2 * py), l0 = 1.0f - l1 - l2;
-                    l0 = std::max(l0, 0.0f), l1 = std::max(l1, 0.0f), l2 = std::max(l2, 0.0f);
-                    const float sum = l0 + l1 + l2;
-                    if (sum > 0)
-                        l1 /= sum, l2 /= sum;
-                    visit(x, l1, l2);
-                };
-                const bool centres = zl <= zr;
-                for (int x = cl; x <= (centres ? std::min(zl - 1, cr) : cr); ++x)
-                    overlap(x);
-                // Centres inside: the weights step along the row.
-                if (centres) {
-                    const double px = zl + 0.5 - q[0].x;
-                    double l1 = a1 * px + b1 * py, l2 = a2 * px + b2 * py;
-                    for (int x = zl; x <= zr;) {
-#if VOXELFAIR_SSE2
-                        // 4 texels at once against the face of the texel before them (the fast
-                        // path): the ones up to the first that is not on it are done.
-                        if (hitFace != UINT32_MAX && x + 3 <= zr) {
-                            float f1[4], f2[4], n[3][4];
-                            double m1 = l1, m2 = l2;
-                            for (int k = 0; k < 4; ++k, m1 += a1, m2 += a2)
-                                f1[k] = float(m1), f2[k] = float(m2);
-                            const int held = holdsQuad(*walk, hitFace, f1, f2, quadTarget, n);
-                            int k = 0;
-                            for (; k < 4 && (held >> k & 1); ++k, ++x, l1 += a1, l2 += a2) {
-                                if (first)
-                                    rowFace = hitFace, first = false;
-                                batch.push(f1[k], f2[k], glm::vec3(n[0][k], n[1][k], n[2][k]), stateRow + uint32_t(x),
-                                           imageRow + uint32_t(x));
-                            }
-                            if (k < 4) {
-                                visit(x, f1[k], f2[k], true);
-                                ++x, l1 += a1, l2 += a2;
-                            }
-                            continue;
-                        }
-#endif
-                        visit(x, float(l1), float(l2));
-                        ++x, l1 += a1, l2 += a2;
-                    }
-                    for (int x = std::max(zr + 1, cl); x <= cr; ++x)
+            // Rows outside the band belong to the bands that hold them.
+            rasterRows(
+                q[0], q[1], q[2], kMargin, width, height,
+                [&](int y, int cl, int cr, int zl, int zr) {
+                    const uint32_t stateRow = uint32_t(y) * uint32_t(width),
+                                   imageRow = uint32_t(height - 1 - y) * uint32_t(width);
+                    const double py = y + 0.5 - q[0].y;
+                    hitFace = rowFace;
+                    bool first = true;
+                    // A texel's state and, when solved, its colour (the triangle's texels are distinct:
+                    // written at once, they keep the order of claims).
+                    auto put = [&](int x, uint32_t colour, bool solved) {
+                        states[stateRow + uint32_t(x)] = uint8_t(kTexelPainted | (solved ? kFromSource : 0));
+                        if (solved)
+                            rgba[imageRow + uint32_t(x)] = colour;
+                    };
+                    auto visit = [&](int x, float l1, float l2, bool tried = false) {
+                        glm::vec3 n(0.0f);
+                        if (!sourceNormal(x, y, l1, l2, n, tried))
+                            n = glm::vec3(0.0f);
+                        if (first)
+                            rowFace = hitFace, first = false;
+                        bool solved = false;
+                        const uint32_t colour = solveTexel(targetFrame, l1, l2, n, solved);
+                        put(x, colour, solved);
+                    };
+                    // Texels the triangle only overlaps, if no centre claimed them (no centre of this
+                    // face lies among them, so their order among the centres keeps the order of
+                    // claims): weights clamped onto it.
+                    auto overlap = [&](int x) {
+                        if (states[stateRow + uint32_t(x)] != 0)
+                            return;
+                        const double px = x + 0.5 - q[0].x;
+                        float l1 = float(a1 * px + b1 * py), l2 = float(a2 * px + b2 * py), l0 = 1.0f - l1 - l2;
+                        l0 = std::max(l0, 0.0f), l1 = std::max(l1, 0.0f), l2 = std::max(l2, 0.0f);
+                        const float sum = l0 + l1 + l2;
+                        if (sum > 0)
+                            l1 /= sum, l2 /= sum;
+                        visit(x, l1, l2);
+                    };
+                    const bool centres = zl <= zr;
+                    for (int x = cl; x <= (centres ? std::min(zl - 1, cr) : cr); ++x)
                         overlap(x);
-                }
-            });
-            solveTexelBatch(targetFrame, batch);
-            for (size_t t = 0; t < batch.size; ++t) {
-                states[batch.stateIndex[t]] = uint8_t(kTexelPainted | (batch.solved[t] ? kFromSource : 0));
-                if (batch.solved[t]) {
-                    uint8_t *p = rgba + 4 * size_t(batch.imageIndex[t]);
-                    const uint32_t c = batch.colour[t];
-                    p[0] = uint8_t(c), p[1] = uint8_t(c >> 8), p[2] = uint8_t(c >> 16);
-                }
-            }
+                    // Centres inside: the weights step along the row.
+                    if (centres) {
+                        const double px = zl + 0.5 - q[0].x;
+                        double l1 = a1 * px + b1 * py, l2 = a2 * px + b2 * py;
+                        bool tried = false;  // texel x is known not to be on hitFace
+                        for (int x = zl; x <= zr;) {
+#if VOXELFAIR_SSE2
+                            // 4 texels at once (those past zr ignored) against the face of the texel
+                            // before them (the fast path), else, when the first is not on it, against
+                            // the face under the first's UV, as sourceNormal tries them: the texels up
+                            // to the first that is not on that face are solved at once.
+                            if (hitFace != UINT32_MAX) {
+                                float f1[4], f2[4];
+                                __m128 n[3];
+                                double m1 = l1, m2 = l2;
+                                for (int k = 0; k < 4; ++k, m1 += a1, m2 += a2)
+                                    f1[k] = float(m1), f2[k] = float(m2);
+                                const __m128 L1 = _mm_loadu_ps(f1), L2 = _mm_loadu_ps(f2);
+                                const int lanes = (1 << std::min(4, zr - x + 1)) - 1;
+                                int held = tried ? 0 : holdsQuad(*walk, hitFace, L1, L2, quadTarget, n) & lanes;
+                                if ((held & 1) == 0) {
+                                    const uint32_t start = under[size_t(y - r0) * size_t(width) + size_t(x)];
+                                    if (start != UINT32_MAX && start != hitFace &&
+                                        ((held = holdsQuad(*walk, start, L1, L2, quadTarget, n) & lanes) & 1) != 0)
+                                        hitFace = start;
+                                }
+                                if ((held & 1) != 0) {
+                                    if (first)
+                                        rowFace = hitFace, first = false;
+                                    int solved = 0;
+                                    alignas(16) uint32_t colour[4];
+                                    _mm_store_si128(reinterpret_cast<__m128i *>(colour),
+                                                    solveQuad(frameLanes, L1, L2, n, solved));
+                                    if (held == 15 && solved == 15) {
+                                        std::memcpy(&rgba[imageRow + uint32_t(x)], colour, sizeof colour);
+                                        std::memset(&states[stateRow + uint32_t(x)], kTexelPainted | kFromSource, 4);
+                                        x += 4;
+                                        l1 = m1, l2 = m2;
+                                        tried = false;
+                                        continue;
+                                    }
+                                    int k = 0;
+                                    for (; k < 4 && (held >> k & 1); ++k, ++x, l1 += a1, l2 += a2)
+                                        put(x, colour[k], (solved >> k & 1) != 0);
+                                    tried = k < 4;
+                                    continue;
+                                }
+                                // Neither: the walk.
+                                visit(x, f1[0], f2[0], true);
+                                ++x, l1 += a1, l2 += a2;
+                                tried = false;
+                                continue;
+                            }
+#endif
+                            visit(x, float(l1), float(l2), tried);
+                            ++x, l1 += a1, l2 += a2;
+                            tried = false;
+                        }
+                        for (int x = std::max(zr + 1, cl); x <= cr; ++x)
+                            overlap(x);
+                    }
+                },
+                r0, r1 - 1);
         }
 
         size_t fromSource = 0, painted = 0;  // local: the bands' counters share cache lines

@@ -1,4 +1,4 @@
-// One vectorised solve of a target triangle's texels; the contract is in texel_frames.h.
+// One texel's tangent-space solve; the contract is in texel_frames.h.
 #include "maps/texel_frames.h"
 
 #include <cmath>
@@ -6,7 +6,7 @@
 namespace voxelfair {
 
 namespace {
-// (c + 1) / 2 in 0..255 (NaN -> 0), without a branch: the loop below must vectorise.
+// (c + 1) / 2 in 0..255 (NaN -> 0), as solveQuad's encode does it.
 int encodeLane(float c) {
     const float v = c * 127.5f + 128.0f, low = v > 0.0f ? v : 0.0f;
     return int(low < 255.0f ? low : 255.0f);
@@ -14,42 +14,33 @@ int encodeLane(float c) {
 
 }  // namespace
 
-void solveTexelBatch(const TargetFrame &frame, TexelBatch &batch) {
-    const size_t count = batch.size;
-    const TargetFrame fr = frame;
-    const float *__restrict bl1 = batch.l1.data(), *__restrict bl2 = batch.l2.data(), *__restrict snx = batch.nx.data(),
-                            *__restrict sny = batch.ny.data(), *__restrict snz = batch.nz.data();
-    uint32_t *__restrict out = batch.colour.data();
-    uint8_t *__restrict solvedOut = batch.solved.data();
-    for (size_t i = 0; i < count; ++i) {
-        const float l1 = bl1[i], l2 = bl2[i], l0 = 1.0f - l1 - l2;
-        float N[3], T[3];
-        for (int a = 0; a < 3; ++a) {
-            N[a] = l0 * fr.n[0][a] + l1 * fr.n[1][a] + l2 * fr.n[2][a];
-            T[a] = l0 * fr.t[0][a] + l1 * fr.t[1][a] + l2 * fr.t[2][a];
-        }
-        const float ni = 1.0f / std::sqrt(N[0] * N[0] + N[1] * N[1] + N[2] * N[2]),
-                    ti = 1.0f / std::sqrt(T[0] * T[0] + T[1] * T[1] + T[2] * T[2]);
-        for (int a = 0; a < 3; ++a)
-            N[a] *= ni, T[a] *= ti;
-        // B = sign cross(N, T); rows of the inverse of the column matrix [T B N]: cross products
-        // over its determinant.
-        const float B[3] = {fr.sign * (N[1] * T[2] - N[2] * T[1]), fr.sign * (N[2] * T[0] - N[0] * T[2]),
-                            fr.sign * (N[0] * T[1] - N[1] * T[0])};
-        const float r0[3] = {B[1] * N[2] - B[2] * N[1], B[2] * N[0] - B[0] * N[2], B[0] * N[1] - B[1] * N[0]};
-        const float r1[3] = {N[1] * T[2] - N[2] * T[1], N[2] * T[0] - N[0] * T[2], N[0] * T[1] - N[1] * T[0]};
-        const float r2[3] = {T[1] * B[2] - T[2] * B[1], T[2] * B[0] - T[0] * B[2], T[0] * B[1] - T[1] * B[0]};
-        const float n[3] = {snx[i], sny[i], snz[i]};
-        const float x = r0[0] * n[0] + r0[1] * n[1] + r0[2] * n[2], y = r1[0] * n[0] + r1[1] * n[1] + r1[2] * n[2],
-                    z = r2[0] * n[0] + r2[1] * n[1] + r2[2] * n[2];
-        const float det = T[0] * r0[0] + T[1] * r0[1] + T[2] * r0[2], length = x * x + y * y + z * z;
-        // Without a frame NaNs or zeros reach here, and fail these tests.
-        const int solved = int(std::fabs(det) > 1e-6f) & int(length > 0.0f);
-        const float scale = std::copysign(1.0f, det) / std::sqrt(length);
-        out[i] = uint32_t(encodeLane(x * scale)) | uint32_t(encodeLane(y * scale)) << 8 |
-                 uint32_t(encodeLane(z * scale)) << 16 | 0xFF000000u;
-        solvedOut[i] = uint8_t(solved);
+uint32_t solveTexel(const TargetFrame &fr, float l1, float l2, const glm::vec3 &source, bool &solved) {
+    const float l0 = 1.0f - l1 - l2;
+    float N[3], T[3];
+    for (int a = 0; a < 3; ++a) {
+        N[a] = l0 * fr.n[0][a] + l1 * fr.n[1][a] + l2 * fr.n[2][a];
+        T[a] = l0 * fr.t[0][a] + l1 * fr.t[1][a] + l2 * fr.t[2][a];
     }
+    const float ni = 1.0f / std::sqrt(N[0] * N[0] + N[1] * N[1] + N[2] * N[2]),
+                ti = 1.0f / std::sqrt(T[0] * T[0] + T[1] * T[1] + T[2] * T[2]);
+    for (int a = 0; a < 3; ++a)
+        N[a] *= ni, T[a] *= ti;
+    // B = sign cross(N, T); rows of the inverse of the column matrix [T B N]: cross products
+    // over its determinant.
+    const float B[3] = {fr.sign * (N[1] * T[2] - N[2] * T[1]), fr.sign * (N[2] * T[0] - N[0] * T[2]),
+                        fr.sign * (N[0] * T[1] - N[1] * T[0])};
+    const float r0[3] = {B[1] * N[2] - B[2] * N[1], B[2] * N[0] - B[0] * N[2], B[0] * N[1] - B[1] * N[0]};
+    const float r1[3] = {N[1] * T[2] - N[2] * T[1], N[2] * T[0] - N[0] * T[2], N[0] * T[1] - N[1] * T[0]};
+    const float r2[3] = {T[1] * B[2] - T[2] * B[1], T[2] * B[0] - T[0] * B[2], T[0] * B[1] - T[1] * B[0]};
+    const float n[3] = {source.x, source.y, source.z};
+    const float x = r0[0] * n[0] + r0[1] * n[1] + r0[2] * n[2], y = r1[0] * n[0] + r1[1] * n[1] + r1[2] * n[2],
+                z = r2[0] * n[0] + r2[1] * n[1] + r2[2] * n[2];
+    const float det = T[0] * r0[0] + T[1] * r0[1] + T[2] * r0[2], length = x * x + y * y + z * z;
+    // Without a frame NaNs or zeros reach here, and fail these tests.
+    solved = (std::fabs(det) > 1e-6f) & (length > 0.0f);
+    const float scale = std::copysign(1.0f, det) / std::sqrt(length);
+    return uint32_t(encodeLane(x * scale)) | uint32_t(encodeLane(y * scale)) << 8 |
+           uint32_t(encodeLane(z * scale)) << 16 | 0xFF000000u;
 }
 
 }  // namespace voxelfair
