@@ -100,6 +100,8 @@ constexpr double kFillAim = 0.92;
 constexpr double kFillHeightAim = 0.97;
 // A fill that would raise the density by less than this is skipped (it costs a packing).
 constexpr double kLeastFillGain = 1.04;
+// A larger model's first fill aim this close above its fallback (below) is not tried first.
+constexpr double kCloseFillAims = 1.03;
 
 // The factor on the density of `masks` (packed with the tight packer, fitting) at which the
 // charts' room, estimated from the masks (each mask's core scaled, its padding and conservative
@@ -184,6 +186,14 @@ bool densestFit(const AtlasCharts &charts, const PackOptions &o, int padding, in
     trial.block = best.block;
     // Small models pack in a few milliseconds: their fill tries more and goes on after a fit.
     const bool cheap = known > 0 && charts.faceCount() <= size_t(std::max(0, o.cheapFillFaces));
+    // A larger model's fill stops at its first fit: where the aim is within kCloseFillAims of the
+    // fallback, the surer fallback goes first (the aim would gain little, and tried first it missed
+    // on the larger shared models and the tank, costing a packing).
+    if (known > 0 && !cheap && fallback >= known * kLeastFillGain && fallback < miss / 1.001 &&
+        d < fallback * kCloseFillAims) {
+        d = fallback;
+        fallback = 0;
+    }
     const int tries = known > 0 ? o.fillAttempts + (cheap ? o.cheapFillExtra : 0) : 16;
     int misses = 0;
     for (int i = 0; i < tries && d > floor; ++i) {

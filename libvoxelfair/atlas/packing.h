@@ -19,7 +19,9 @@
 //     packing's masks, fills the texture as densely as that packing filled its rows; after a
 //     miss, where the first packing's height grown like the density squared reaches 97% of the
 //     texture; skipped when it would gain under 4%; after a second miss, the geometric mean of
-//     the fit and the lowest miss; models up to 32768 faces go on after a fit, cheapFillFaces),
+//     the fit and the lowest miss; models up to 32768 faces go on after a fit, cheapFillFaces;
+//     larger ones stop at their first fit and try the second aim first when the first is within
+//     3% above it: close aims missed on the larger shared models, and a packing is costly there),
 //     so the charts fill it instead of leaving up
 //     to three quarters empty after rounding; a small texture whose charts still fill under
 //     half of it (rims of few small charts) steps up while small (leastChartShare). If even
