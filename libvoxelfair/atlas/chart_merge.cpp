@@ -46,12 +46,19 @@ struct Box {
 // A large chart's faces bucketed on a uniform grid over its UV box (about two faces per cell),
 // so a merge looks only at the faces near the small chart. Boxes outside the grid are clamped
 // to its border cells on both sides (insert and query), which keeps every meeting pair found.
+// Each cell is a list threaded through one array of entries (newest first): one allocation per
+// grid, not one per cell (a vector per cell was an eighth of the charts' time on large meshes).
 constexpr uint32_t kGridFaces = 64;  // charts this large get a grid; smaller ones are scanned
 struct FaceGrid {
+    struct Entry {
+        uint32_t face, next;
+    };
     glm::vec2 lo{0.0f};
     float perCell = 1;
     int nx = 1, ny = 1;
-    std::vector<std::vector<uint32_t>> cells;
+    std::vector<uint32_t> first;  // per cell, its newest entry (kNone: empty)
+    std::vector<Entry> entries;
+    bool built() const { return !first.empty(); }
     void cellRange(const Box &b, int &x0, int &y0, int &x1, int &y1) const {
         auto cell = [&](float v, float o, int n) { return std::clamp(int((v - o) * perCell), 0, n - 1); };
         x0 = cell(b.lo.x, lo.x, nx), x1 = cell(b.hi.x, lo.x, nx);
@@ -61,8 +68,20 @@ struct FaceGrid {
         int x0, y0, x1, y1;
         cellRange(b, x0, y0, x1, y1);
         for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x) {
+                uint32_t &head = first[size_t(y) * nx + x];
+                entries.push_back({f, head});
+                head = uint32_t(entries.size() - 1);
+            }
+    }
+    // Appends the faces of the cells that box `b` meets (a face once per cell it is in).
+    void query(const Box &b, std::vector<uint32_t> &out) const {
+        int x0, y0, x1, y1;
+        cellRange(b, x0, y0, x1, y1);
+        for (int y = y0; y <= y1; ++y)
             for (int x = x0; x <= x1; ++x)
-                cells[size_t(y) * nx + x].push_back(f);
+                for (uint32_t e = first[size_t(y) * nx + x]; e != kNone; e = entries[e].next)
+                    out.push_back(entries[e].face);
     }
 };
 
@@ -114,7 +133,7 @@ size_t mergeSmallCharts(const AtlasMesh &mesh, const uint32_t *opposite, const C
     };
     auto gridOf = [&](uint32_t a) -> FaceGrid & {
         FaceGrid &g = grids[a];
-        if (!g.cells.empty())
+        if (g.built())
             return g;
         Box all;
         for (uint32_t f = head[a]; f != kNone; f = next[f])
@@ -125,7 +144,8 @@ size_t mergeSmallCharts(const AtlasMesh &mesh, const uint32_t *opposite, const C
         g.nx = std::clamp(int(extent.x / cell) + 1, 1, 1024);
         g.ny = std::clamp(int(extent.y / cell) + 1, 1, 1024);
         g.perCell = float(std::min(g.nx / double(extent.x), g.ny / double(extent.y)));
-        g.cells.resize(size_t(g.nx) * g.ny);
+        g.first.assign(size_t(g.nx) * g.ny, kNone);
+        g.entries.reserve(2 * size_t(count[a]));
         for (uint32_t f = head[a]; f != kNone; f = next[f])
             g.insert(f, faceBox(f));
         return g;
@@ -185,14 +205,7 @@ size_t mergeSmallCharts(const AtlasMesh &mesh, const uint32_t *opposite, const C
             // a's faces whose boxes meet b's: from the grid, or all of a's when small.
             near.clear();
             if (count[a] >= kGridFaces) {
-                const FaceGrid &g = gridOf(a);
-                int x0, y0, x1, y1;
-                g.cellRange(box, x0, y0, x1, y1);
-                for (int y = y0; y <= y1; ++y)
-                    for (int x = x0; x <= x1; ++x) {
-                        const std::vector<uint32_t> &cell = g.cells[size_t(y) * g.nx + x];
-                        near.insert(near.end(), cell.begin(), cell.end());
-                    }
+                gridOf(a).query(box, near);
             } else {
                 for (uint32_t f = head[a]; f != kNone; f = next[f])
                     near.push_back(f);
@@ -209,7 +222,7 @@ size_t mergeSmallCharts(const AtlasMesh &mesh, const uint32_t *opposite, const C
             for (size_t i = 0; i < faces.size(); ++i) {
                 std::copy_n(&moved[3 * i], 3, &uv[3 * size_t(faces[i])]);
                 chartOf[faces[i]] = a;
-                if (!grids[a].cells.empty())
+                if (grids[a].built())
                     grids[a].insert(faces[i], faceBox(faces[i]));
             }
             next[tail[a]] = head[b];
