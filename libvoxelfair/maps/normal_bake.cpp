@@ -14,7 +14,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <memory>
 #include <future>
 
@@ -69,7 +68,6 @@ glm::vec3 applyNormalMapTexel(glm::vec3 texel, glm::vec3 n, glm::vec4 t) {
 namespace {
 
 constexpr int kBandRows = 32;
-constexpr uint8_t kFromSource = 2;  // a state bit beside kTexelPainted (texel_dilation.h)
 
 #if VOXELFAIR_SSE2
 // SurfaceWalk::holds() and normalAt() on source face `face` for 4 texels of a row at once, lane k
@@ -204,8 +202,12 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
     }
     const size_t bandCount = bands.start.size() - 1;
     std::vector<size_t> baked(bandCount, 0), flat(bandCount, 0);
-    // Per thread: the band's source faces under the texel centres.
-    std::vector<std::vector<uint32_t>> scratch(size_t(bandThreads(options.threads, bandCount)));
+    // Per thread: the band's source faces under the texel centres, a row of a triangle's texels.
+    struct Scratch {
+        std::vector<uint32_t> under;
+        TexelRow row;
+    };
+    std::vector<Scratch> scratch(size_t(bandThreads(options.threads, bandCount)));
     runWorkerBands(bandCount, options.threads, [&](size_t band, int worker) {
         const int r0 = int(band) * kBandRows, r1 = std::min(height, r0 + kBandRows);
         uint32_t *const rgba = reinterpret_cast<uint32_t *>(out.rgba.data());
@@ -215,7 +217,8 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
                   0xFFFF8080u);  // bytes 128, 128, 255, 255
         glm::dvec2 q[3];
         // The source face under each texel centre of the band (its UV triangle holds the centre).
-        std::vector<uint32_t> &under = scratch[size_t(worker)];
+        std::vector<uint32_t> &under = scratch[size_t(worker)].under;
+        TexelRow &row = scratch[size_t(worker)].row;
         under.assign(size_t(r1 - r0) * size_t(width), UINT32_MAX);
         for (uint32_t i = sourceBands.start[band]; i < sourceBands.start[band + 1]; ++i)
             fillFacesUnder(sorted->mesh, sourceBands.faces[i], width, height, r0, r1, under.data());
@@ -246,7 +249,6 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
             targetFrame.sign = sign;
 #if VOXELFAIR_SSE2
             const QuadTarget quadTarget(tp[0], e1, e2, tn);
-            const FrameLanes frameLanes(targetFrame);
 #endif
             // The texels are visited row by row, left to right. A texel's source point is most
             // often on the face of the texel before it (checked first), else on the source face
@@ -282,111 +284,101 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
                 return true;
             };
             // Rows outside the band belong to the bands that hold them.
-            rasterRows(
-                q[0], q[1], q[2], kMargin, width, height,
-                [&](int y, int cl, int cr, int zl, int zr) {
-                    const uint32_t stateRow = uint32_t(y) * uint32_t(width),
-                                   imageRow = uint32_t(height - 1 - y) * uint32_t(width);
-                    const double py = y + 0.5 - q[0].y;
-                    hitFace = rowFace;
-                    bool first = true;
-                    // A texel's state and, when solved, its colour (the triangle's texels are distinct:
-                    // written at once, they keep the order of claims).
-                    auto put = [&](int x, uint32_t colour, bool solved) {
-                        states[stateRow + uint32_t(x)] = uint8_t(kTexelPainted | (solved ? kFromSource : 0));
-                        if (solved)
-                            rgba[imageRow + uint32_t(x)] = colour;
-                    };
-                    auto visit = [&](int x, float l1, float l2, bool tried = false) {
-                        glm::vec3 n(0.0f);
-                        if (!sourceNormal(x, y, l1, l2, n, tried))
-                            n = glm::vec3(0.0f);
-                        if (first)
-                            rowFace = hitFace, first = false;
-                        bool solved = false;
-                        const uint32_t colour = solveTexel(targetFrame, l1, l2, n, solved);
-                        put(x, colour, solved);
-                    };
-                    // Texels the triangle only overlaps, if no centre claimed them (no centre of this
-                    // face lies among them, so their order among the centres keeps the order of
-                    // claims): weights clamped onto it.
-                    auto overlap = [&](int x) {
-                        if (states[stateRow + uint32_t(x)] != 0)
-                            return;
-                        const double px = x + 0.5 - q[0].x;
-                        float l1 = float(a1 * px + b1 * py), l2 = float(a2 * px + b2 * py), l0 = 1.0f - l1 - l2;
-                        l0 = std::max(l0, 0.0f), l1 = std::max(l1, 0.0f), l2 = std::max(l2, 0.0f);
-                        const float sum = l0 + l1 + l2;
-                        if (sum > 0)
-                            l1 /= sum, l2 /= sum;
-                        visit(x, l1, l2);
-                    };
-                    const bool centres = zl <= zr;
-                    for (int x = cl; x <= (centres ? std::min(zl - 1, cr) : cr); ++x)
-                        overlap(x);
-                    // Centres inside: the weights step along the row.
-                    if (centres) {
-                        const double px = zl + 0.5 - q[0].x;
-                        double l1 = a1 * px + b1 * py, l2 = a2 * px + b2 * py;
-                        bool tried = false;  // texel x is known not to be on hitFace
-                        for (int x = zl; x <= zr;) {
+            auto visitRow = [&](int y, int cl, int cr, int zl, int zr) {
+                const uint32_t stateRow = uint32_t(y) * uint32_t(width),
+                               imageRow = uint32_t(height - 1 - y) * uint32_t(width);
+                const double py = y + 0.5 - q[0].y;
+                hitFace = rowFace;
+                bool first = true;
+                // The row's texels are gathered, then solved 4 at a time and written (the
+                // triangle's texels are distinct: written after each row, they keep the order of
+                // claims).
+                const bool centres = zl <= zr;
+                const int from = centres ? std::min(cl, zl) : cl, to = centres ? std::max(cr, zr) : cr;
+                row.start(from, to - from + 1);
+                auto visit = [&](int x, float l1, float l2, bool tried = false) {
+                    glm::vec3 n(0.0f);
+                    if (!sourceNormal(x, y, l1, l2, n, tried))
+                        n = glm::vec3(0.0f);
+                    if (first)
+                        rowFace = hitFace, first = false;
+                    row.set(x, l1, l2, n);
+                };
+                // Texels the triangle only overlaps, if no centre claimed them (no centre of this
+                // face lies among them, so their order among the centres keeps the order of
+                // claims): weights clamped onto it.
+                auto overlap = [&](int x) {
+                    if (states[stateRow + uint32_t(x)] != 0)
+                        return;
+                    const double px = x + 0.5 - q[0].x;
+                    float l1 = float(a1 * px + b1 * py), l2 = float(a2 * px + b2 * py), l0 = 1.0f - l1 - l2;
+                    l0 = std::max(l0, 0.0f), l1 = std::max(l1, 0.0f), l2 = std::max(l2, 0.0f);
+                    const float sum = l0 + l1 + l2;
+                    if (sum > 0)
+                        l1 /= sum, l2 /= sum;
+                    visit(x, l1, l2);
+                };
+                for (int x = cl; x <= (centres ? std::min(zl - 1, cr) : cr); ++x)
+                    overlap(x);
+                // Centres inside: the weights step along the row.
+                if (centres) {
+                    const double px = zl + 0.5 - q[0].x;
+                    double l1 = a1 * px + b1 * py, l2 = a2 * px + b2 * py;
+                    bool tried = false;  // texel x is known not to be on hitFace
+                    for (int x = zl; x <= zr;) {
 #if VOXELFAIR_SSE2
-                            // 4 texels at once (those past zr ignored) against the face of the texel
-                            // before them (the fast path), else, when the first is not on it, against
-                            // the face under the first's UV, as sourceNormal tries them: the texels up
-                            // to the first that is not on that face are solved at once.
-                            if (hitFace != UINT32_MAX) {
-                                float f1[4], f2[4];
-                                __m128 n[3];
-                                double m1 = l1, m2 = l2;
-                                for (int k = 0; k < 4; ++k, m1 += a1, m2 += a2)
-                                    f1[k] = float(m1), f2[k] = float(m2);
-                                const __m128 L1 = _mm_loadu_ps(f1), L2 = _mm_loadu_ps(f2);
-                                const int lanes = (1 << std::min(4, zr - x + 1)) - 1;
-                                int held = tried ? 0 : holdsQuad(*walk, hitFace, L1, L2, quadTarget, n) & lanes;
-                                if ((held & 1) == 0) {
-                                    const uint32_t start = under[size_t(y - r0) * size_t(width) + size_t(x)];
-                                    if (start != UINT32_MAX && start != hitFace &&
-                                        ((held = holdsQuad(*walk, start, L1, L2, quadTarget, n) & lanes) & 1) != 0)
-                                        hitFace = start;
-                                }
-                                if ((held & 1) != 0) {
-                                    if (first)
-                                        rowFace = hitFace, first = false;
-                                    int solved = 0;
-                                    alignas(16) uint32_t colour[4];
-                                    _mm_store_si128(reinterpret_cast<__m128i *>(colour),
-                                                    solveQuad(frameLanes, L1, L2, n, solved));
-                                    if (held == 15 && solved == 15) {
-                                        std::memcpy(&rgba[imageRow + uint32_t(x)], colour, sizeof colour);
-                                        std::memset(&states[stateRow + uint32_t(x)], kTexelPainted | kFromSource, 4);
-                                        x += 4;
-                                        l1 = m1, l2 = m2;
-                                        tried = false;
-                                        continue;
-                                    }
-                                    int k = 0;
-                                    for (; k < 4 && (held >> k & 1); ++k, ++x, l1 += a1, l2 += a2)
-                                        put(x, colour[k], (solved >> k & 1) != 0);
-                                    tried = k < 4;
-                                    continue;
-                                }
-                                // Neither: the walk.
-                                visit(x, f1[0], f2[0], true);
-                                ++x, l1 += a1, l2 += a2;
-                                tried = false;
+                        // 4 texels at once (those past zr ignored) against the face of the texel
+                        // before them (the fast path), else, when the first is not on it, against
+                        // the face under the first's UV, as sourceNormal tries them: the texels up
+                        // to the first that is not on that face are done.
+                        if (hitFace != UINT32_MAX) {
+                            float f1[4], f2[4];
+                            __m128 n[3];
+                            double m1 = l1, m2 = l2;
+                            for (int k = 0; k < 4; ++k, m1 += a1, m2 += a2)
+                                f1[k] = float(m1), f2[k] = float(m2);
+                            const __m128 L1 = _mm_loadu_ps(f1), L2 = _mm_loadu_ps(f2);
+                            const int lanes = (1 << std::min(4, zr - x + 1)) - 1;
+                            int held = tried ? 0 : holdsQuad(*walk, hitFace, L1, L2, quadTarget, n) & lanes;
+                            if ((held & 1) == 0) {
+                                const uint32_t start = under[size_t(y - r0) * size_t(width) + size_t(x)];
+                                if (start != UINT32_MAX && start != hitFace &&
+                                    ((held = holdsQuad(*walk, start, L1, L2, quadTarget, n) & lanes) & 1) != 0)
+                                    hitFace = start;
+                            }
+                            if ((held & 1) != 0) {
+                                if (first)
+                                    rowFace = hitFace, first = false;
+                                int k = 0;  // the lanes held, up to the first that is not
+                                while (k < 4 && (held >> k & 1) != 0)
+                                    ++k;
+                                row.setQuad(x, L1, L2, n, k);
+                                x += k;
+                                if (k == 4)
+                                    l1 = m1, l2 = m2;
+                                else
+                                    for (int j = 0; j < k; ++j)
+                                        l1 += a1, l2 += a2;
+                                tried = k < 4;
                                 continue;
                             }
-#endif
-                            visit(x, float(l1), float(l2), tried);
+                            // Neither: the walk.
+                            visit(x, f1[0], f2[0], true);
                             ++x, l1 += a1, l2 += a2;
                             tried = false;
+                            continue;
                         }
-                        for (int x = std::max(zr + 1, cl); x <= cr; ++x)
-                            overlap(x);
+#endif
+                        visit(x, float(l1), float(l2), tried);
+                        ++x, l1 += a1, l2 += a2;
+                        tried = false;
                     }
-                },
-                r0, r1 - 1);
+                    for (int x = std::max(zr + 1, cl); x <= cr; ++x)
+                        overlap(x);
+                }
+                writeTexelRow(targetFrame, row, states + stateRow, rgba + imageRow);
+            };
+            rasterRows(q[0], q[1], q[2], kMargin, width, height, visitRow, r0, r1 - 1);
         }
 
         size_t fromSource = 0, painted = 0;  // local: the bands' counters share cache lines

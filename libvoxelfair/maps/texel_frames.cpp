@@ -1,6 +1,8 @@
 // One texel's tangent-space solve; the contract is in texel_frames.h.
 #include "maps/texel_frames.h"
 
+#include "maps/texel_dilation.h"
+
 #include <cmath>
 
 namespace voxelfair {
@@ -41,6 +43,47 @@ uint32_t solveTexel(const TargetFrame &fr, float l1, float l2, const glm::vec3 &
     const float scale = std::copysign(1.0f, det) / std::sqrt(length);
     return uint32_t(encodeLane(x * scale)) | uint32_t(encodeLane(y * scale)) << 8 |
            uint32_t(encodeLane(z * scale)) << 16 | 0xFF000000u;
+}
+
+void writeTexelRow(const TargetFrame &frame, const TexelRow &row, uint8_t *states, uint32_t *rgba) {
+    int i = 0;
+    uint8_t *const s = states + row.x0;
+    uint32_t *const c = rgba + row.x0;
+#if VOXELFAIR_SSE2
+    const FrameLanes lanes(frame);
+    for (; i < row.size; i += 4) {
+        const size_t k = size_t(i);
+        const __m128 n[3] = {_mm_loadu_ps(&row.nx[k]), _mm_loadu_ps(&row.ny[k]), _mm_loadu_ps(&row.nz[k])};
+        int solved = 0;
+        alignas(16) uint32_t colour[4];
+        _mm_store_si128(reinterpret_cast<__m128i *>(colour),
+                        solveQuad(lanes, _mm_loadu_ps(&row.l1[k]), _mm_loadu_ps(&row.l2[k]), n, solved));
+        uint32_t kept;
+        std::memcpy(&kept, &row.keep[k], 4);
+        if (kept == 0x01010101u && solved == 15 && i + 4 <= row.size) {
+            std::memcpy(&c[k], colour, sizeof colour);
+            std::memset(&s[k], kTexelPainted | kTexelFromSource, 4);
+            continue;
+        }
+        for (int j = 0; j < 4 && i + j < row.size; ++j)
+            if (row.keep[k + size_t(j)] != 0) {
+                const bool ok = (solved >> j & 1) != 0;
+                s[k + size_t(j)] = uint8_t(kTexelPainted | (ok ? kTexelFromSource : 0));
+                if (ok)
+                    c[k + size_t(j)] = colour[j];
+            }
+    }
+#endif
+    for (; i < row.size; ++i) {
+        const size_t k = size_t(i);
+        if (row.keep[k] == 0)
+            continue;
+        bool ok = false;
+        const uint32_t colour = solveTexel(frame, row.l1[k], row.l2[k], glm::vec3(row.nx[k], row.ny[k], row.nz[k]), ok);
+        s[k] = uint8_t(kTexelPainted | (ok ? kTexelFromSource : 0));
+        if (ok)
+            c[k] = colour;
+    }
 }
 
 }  // namespace voxelfair

@@ -2,15 +2,18 @@
 // where N and T are the triangle's vertex normals and MikkTSpace tangents interpolated at the
 // texel and normalised, B = sign * cross(N, T), and n the source normal found for it
 // (normal_bake.h): the exact inverse of the glTF / Blender / MikkTSpace pixel shader.
-// solveTexel solves one texel; solveQuad (SSE2) solves 4 texels of a row at once, each lane
-// repeating solveTexel's float operations in its order, so that both give the same colour bit
-// for bit (texel_frames.cpp is compiled with -fno-math-errno: sqrt without errno).
+// solveTexel solves one texel; solveQuad (SSE2) solves 4 texels at once, each lane repeating
+// solveTexel's float operations in its order, so that both give the same colour bit for bit
+// (texel_frames.cpp is compiled with -fno-math-errno: sqrt without errno). A TexelRow gathers the
+// texels of one row of a triangle, solved 4 at a time and written by writeTexelRow.
 #pragma once
 
 #include "base/simd_variant.h"
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
@@ -88,5 +91,42 @@ inline __m128i solveQuad(const FrameLanes &fr, __m128 l1, __m128 l2, const __m12
                         _mm_or_si128(_mm_slli_epi32(encode(z), 16), _mm_set1_epi32(int(0xFF000000u))));
 }
 #endif
+
+// Texels [x0, x0 + size) of one image row: weights, source normal, and whether the texel is
+// written (kept); one per thread, grown once.
+struct TexelRow {
+    std::vector<float> l1, l2, nx, ny, nz;  // 4 more than size: a quad's lanes past the end
+    std::vector<uint8_t> keep;
+    int x0 = 0, size = 0;
+    void start(int first, int count) {
+        if (l1.size() < size_t(count) + 4) {
+            for (auto *v : {&l1, &l2, &nx, &ny, &nz})
+                v->resize(size_t(count) + 4, 0.0f);
+            keep.resize(size_t(count) + 4);
+        }
+        x0 = first, size = count;
+        std::memset(keep.data(), 0, size_t(count));
+    }
+    void set(int x, float w1, float w2, const glm::vec3 &n) {
+        const size_t i = size_t(x - x0);
+        l1[i] = w1, l2[i] = w2, nx[i] = n.x, ny[i] = n.y, nz[i] = n.z, keep[i] = 1;
+    }
+#if VOXELFAIR_SSE2
+    // Texels x .. x + 3, the first `kept` of them kept.
+    void setQuad(int x, __m128 w1, __m128 w2, const __m128 n[3], int kept) {
+        const size_t i = size_t(x - x0);
+        _mm_storeu_ps(&l1[i], w1), _mm_storeu_ps(&l2[i], w2);
+        _mm_storeu_ps(&nx[i], n[0]), _mm_storeu_ps(&ny[i], n[1]), _mm_storeu_ps(&nz[i], n[2]);
+        std::memset(&keep[i], 1, size_t(kept));
+    }
+#endif
+};
+
+// A texel's state bit beside kTexelPainted (texel_dilation.h): its colour is the source's.
+constexpr uint8_t kTexelFromSource = 2;
+
+// The kept texels of `row` solved: states[x] = kTexelPainted, | kTexelFromSource where solved,
+// rgba[x] = the colour where solved; the others left. states and rgba point at the row's x = 0.
+void writeTexelRow(const TargetFrame &frame, const TexelRow &row, uint8_t *states, uint32_t *rgba);
 
 }  // namespace voxelfair
