@@ -30,6 +30,9 @@
 // padded neighbour lists, the rest their corner lists; the same sums in the same order either way,
 // four regular slots at once in SSE); the blend above is taken off along n, clamped into the cell
 // (step 4). With wideRounds <= rounds, the local mean alone (bit for bit the one-scale step).
+// The mark's rounds visit only the vertices within reach of a marked one when they are few (a
+// large smooth surface: 45 marked vertices of 98,582 on the benchmark's sphere), with the same
+// result (averageNearMarks).
 #include "fairing/constrained/fairing_state.h"
 
 #include <algorithm>
@@ -50,6 +53,55 @@ constexpr float kLatticeDegrees = 1.0f;  // a normal this near a lattice axis: a
 constexpr float kNearGain = 50.0f;       // the averaged mark at which the local mean takes over
 
 }  // namespace
+
+// `rounds` rounds of the mean on `values` (the marks, by slot: 1 at the vertices `marked`, 0
+// elsewhere), the result in `values`; `spare` as large. After round r only the vertices within r
+// edges of a marked one can be non-zero, so when those are few (a large smooth surface) only
+// they are averaged, each over its corner list: the same sums in the same order as `dense` (the
+// padded lists only add the zero slot's 0 after them, and the marks' means are not negative),
+// the same result bit for bit. Otherwise `dense` runs the rounds.
+template <bool kQuads, class Dense>
+void averageNearMarks(const FairingState<kQuads> &s, const float *weight, const std::vector<uint32_t> &marked,
+                      int rounds, float *&values, float *&spare, Dense &&dense) {
+    const uint32_t *const start = s.vertexStart, *const next = s.vertexNext, *const rank = s.rank;
+    const size_t limit = s.V / 4;  // beyond this many vertices in reach, the dense rounds
+    // The vertices within `rounds` edges of a marked one, nearest first; reach[r]: how many are
+    // within r edges.
+    std::vector<uint32_t> active;
+    std::vector<size_t> reach;
+    if (marked.size() <= limit && rounds > 0) {
+        std::vector<uint8_t> seen(s.V, 0);
+        active = marked;
+        for (uint32_t v : marked)
+            seen[v] = 1;
+        reach.push_back(active.size());
+        for (int r = 1; r <= rounds && active.size() <= limit; ++r) {
+            for (size_t i = r == 1 ? 0 : reach[size_t(r - 2)]; i < reach[size_t(r - 1)]; ++i)
+                for (uint32_t j = start[active[i]]; j < start[active[i] + 1]; ++j)
+                    if (!seen[next[j]]) {
+                        seen[next[j]] = 1;
+                        active.push_back(next[j]);
+                    }
+            reach.push_back(active.size());
+        }
+    }
+    if (reach.size() != size_t(rounds) + 1 || active.size() > limit) {
+        dense(values, spare, rounds);
+        return;
+    }
+    // Slots out of reach of round r read 0 in both buffers: `spare` starts at 0.
+    std::fill(spare, spare + s.zeroSlot + 1, 0.0f);
+    for (int r = 1; r <= rounds; ++r) {
+        for (size_t i = 0; i < reach[size_t(r)]; ++i) {
+            const uint32_t v = active[i];
+            float sum = values[rank[v]];
+            for (uint32_t j = start[v]; j < start[v + 1]; ++j)
+                sum += values[rank[next[j]]];
+            spare[rank[v]] = sum * weight[rank[v]];
+        }
+        std::swap(values, spare);
+    }
+}
 
 template <bool kQuads>
 VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds, int wideRounds) {
@@ -128,6 +180,7 @@ VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds, int wid
         float *near = s.scratch.template take<float>(slots);
         std::fill(near, near + slots, 0.0f);
         const VertexNormal *const vertexNormal = s.vertexNormal;
+        std::vector<uint32_t> marked;
         const float turnCos = std::cos(glm::radians(kTurnDegrees));
         const float latticeCos = std::cos(glm::radians(kLatticeDegrees));
         for (size_t v = 0; v < V; ++v) {
@@ -136,8 +189,11 @@ VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds, int wid
             for (uint32_t j = start[v]; !turns && j < start[v + 1]; ++j)
                 turns = glm::dot(n, vertexNormal[next[j]].n) < turnCos;
             near[rank[v]] = turns ? 1.0f : 0.0f;
+            if (turns)
+                marked.push_back(uint32_t(v));
         }
-        average(near, smooth, rounds);
+        averageNearMarks(s, weight, marked, rounds, near, smooth,
+                         [&](float *&values, float *&spare, int count) { average(values, spare, count); });
         for (size_t slot = 0; slot < s.freeSlots; ++slot) {
             const float t = std::min(1.0f, kNearGain * near[slot]);
             along[slot] = t * local[slot] + (1.0f - t) * along[slot];
