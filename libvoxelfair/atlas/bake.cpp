@@ -84,23 +84,38 @@ void dilate(Canvas &canvas, int rings, int threads) {
     // The first ring in bands of rows (on up to `threads` threads), joined in row order.
     const size_t bands = threads > 1 ? size_t(std::min(height, 4 * threads)) : 1;
     std::vector<std::vector<uint32_t>> found(bands);
+    // Eight texels at a time (0/1 bytes in a little-endian word): a texel is near when its
+    // column (the rows above, at and below or-ed) or a neighbouring column is filled and it is
+    // not; the neighbouring columns are the word shifted by a byte, with the adjacent words'
+    // end bytes carried in. Rows are padded with empty columns to whole words.
+    const size_t words = (size_t(width) + 7) / 8;
     runBands(bands, threads, [&](size_t band) {
-        std::vector<uint8_t> column(size_t(width) + 2, 0), near(size_t(width), 0);
+        std::vector<uint64_t> column(words + 2, 0), mids(words, 0);
         const int from = int(size_t(height) * band / bands), to = int(size_t(height) * (band + 1) / bands);
+        const size_t whole = size_t(width) / 8;  // words without padding
+        auto load = [&](const uint8_t *p, size_t w) {
+            uint64_t v = 0;
+            if (w < whole)
+                std::memcpy(&v, p + 8 * w, 8);
+            else
+                std::memcpy(&v, p + 8 * w, size_t(width) % 8);
+            return v;
+        };
         for (int row = from; row < to; ++row) {
             const uint8_t *mid = &filled[size_t(row) * size_t(width)];
             const uint8_t *up = row > 0 ? mid - width : mid, *down = row + 1 < height ? mid + width : mid;
-            for (int x = 0; x < width; ++x)
-                column[size_t(x) + 1] = uint8_t(up[x] | mid[x] | down[x]);
-            for (int x = 0; x < width; ++x)
-                near[size_t(x)] =
-                    uint8_t((column[size_t(x)] | column[size_t(x) + 1] | column[size_t(x) + 2]) & ~mid[x]);
-            for (int x = 0; x < width; x += 8) {
-                uint64_t word = 0;
-                std::memcpy(&word, &near[size_t(x)], size_t(std::min(8, width - x)));
-                for (int k = 0; word != 0 && k < 8; ++k, word >>= 8)
+            for (size_t w = 0; w < words; ++w) {
+                mids[w] = load(mid, w);
+                column[w + 1] = load(up, w) | mids[w] | load(down, w);
+            }
+            for (size_t w = 0; w < words; ++w) {
+                const uint64_t c = column[w + 1];
+                uint64_t word = (c | c << 8 | column[w] >> 56 | c >> 8 | column[w + 2] << 56) & ~mids[w];
+                if (8 * w + 8 > size_t(width))  // the padding columns are never near
+                    word &= ~uint64_t(0) >> (8 * (8 * w + 8 - size_t(width)));
+                for (int k = 0; word != 0; ++k, word >>= 8)
                     if (word & 0xFF)
-                        found[band].push_back(uint32_t(size_t(row) * size_t(width) + size_t(x + k)));
+                        found[band].push_back(uint32_t(size_t(row) * size_t(width) + 8 * w + size_t(k)));
             }
         }
     });
