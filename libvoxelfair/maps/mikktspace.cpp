@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstring>
 #include <unordered_map>
+#include <vector>
 
 namespace voxelfair {
 
@@ -82,17 +83,27 @@ struct Builder {
             }
         };
         const size_t corners = 3 * in.triangleCount;
-        std::unordered_map<Key, int, Hash> first;
-        first.reserve(corners);
+        // Open addressing (linear probing) over the corners' keys: the first corner of each key.
+        size_t size = 16;
+        while (size < 2 * corners)
+            size *= 2;
+        std::vector<int> table(size, -1);
+        std::vector<Key> keys(corners);
         std::vector<int> welded(corners);
         for (size_t c = 0; c < corners; ++c) {
             const V3 p = in.positions[c], n = in.normals[c];
             const glm::vec2 t = in.uvs[c];
-            Key key{{p.x, p.y, p.z, n.x, n.y, n.z, t.x, t.y}};
+            Key &key = keys[c];
+            key = Key{{p.x, p.y, p.z, n.x, n.y, n.z, t.x, t.y}};
             for (float &f : key.v)
                 if (f == 0.0f)
                     f = 0.0f;  // -0 and +0 compare equal in the reference
-            welded[c] = first.emplace(key, int(c)).first->second;
+            size_t slot = Hash()(key) & (size - 1);
+            while (table[slot] >= 0 && !(keys[size_t(table[slot])] == key))
+                slot = (slot + 1) & (size - 1);
+            if (table[slot] < 0)
+                table[slot] = int(c);
+            welded[c] = table[slot];
         }
         return welded;
     }
