@@ -6,7 +6,7 @@
 //
 // The sphere (radius 70, 92,280 quads) is smoothed like MeshLab's Taubin filter (10 lambda|mu
 // steps), which leaves the staircase ripples that make the greedy charts' micro partitions;
-// "Taubin4" keeps more of them (~9.5k charts instead of ~3.4k).
+// "Taubin4" keeps more of them (measured on f6ef217: ~2.3k charts after chart merging instead of 264).
 #include "atlas/atlas_measures.h"
 #include "shapes/atlas_test_meshes.h"
 #include "atlas/texture_atlas.h"
