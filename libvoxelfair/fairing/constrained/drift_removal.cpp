@@ -52,6 +52,17 @@ constexpr float kTurnDegrees = 15.0f;    // a neighbour's normal this far: the s
 constexpr float kLatticeDegrees = 1.0f;  // a normal this near a lattice axis: a lattice face
 constexpr float kNearGain = 50.0f;       // the averaged mark at which the local mean takes over
 
+// One Jacobi round at vertex v over its corner list, by slot: its value and its neighbours',
+// summed in the corner list's order, times its weight (1 / (1 + valence)). Every path below sums
+// in this order, so they agree bit for bit.
+template <bool kQuads>
+inline float cornerListMean(const FairingState<kQuads> &s, const float *values, const float *weight, uint32_t v) {
+    float sum = values[s.rank[v]];
+    for (uint32_t j = s.vertexStart[v]; j < s.vertexStart[v + 1]; ++j)
+        sum += values[s.rank[s.vertexNext[j]]];
+    return sum * weight[s.rank[v]];
+}
+
 }  // namespace
 
 // `rounds` rounds of the mean on `values` (the marks, by slot: 1 at the vertices `marked`, 0
@@ -92,13 +103,8 @@ void averageNearMarks(const FairingState<kQuads> &s, const float *weight, const 
     // Slots out of reach of round r read 0 in both buffers: `spare` starts at 0.
     std::fill(spare, spare + s.zeroSlot + 1, 0.0f);
     for (int r = 1; r <= rounds; ++r) {
-        for (size_t i = 0; i < reach[size_t(r)]; ++i) {
-            const uint32_t v = active[i];
-            float sum = values[rank[v]];
-            for (uint32_t j = start[v]; j < start[v + 1]; ++j)
-                sum += values[rank[next[j]]];
-            spare[rank[v]] = sum * weight[rank[v]];
-        }
+        for (size_t i = 0; i < reach[size_t(r)]; ++i)
+            spare[rank[active[i]]] = cornerListMean(s, values, weight, active[i]);
         std::swap(values, spare);
     }
 }
@@ -161,13 +167,8 @@ VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds, int wid
                     spare[slot] = sum * weight[slot];
                 }
             }
-            for (size_t i = 0; i < otherCount; ++i) {
-                const uint32_t v = others[i];
-                float sum = values[rank[v]];
-                for (uint32_t j = start[v]; j < start[v + 1]; ++j)
-                    sum += values[rank[next[j]]];
-                spare[rank[v]] = sum * weight[rank[v]];
-            }
+            for (size_t i = 0; i < otherCount; ++i)
+                spare[rank[others[i]]] = cornerListMean(s, values, weight, others[i]);
             std::swap(values, spare);
         }
     };
