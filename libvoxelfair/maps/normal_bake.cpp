@@ -258,8 +258,9 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
             // under its UV (the UV grid's nearest where none is).
             uint32_t hitFace = UINT32_MAX, rowFace = UINT32_MAX;
             // The source normal at texel (x, y) with weights l1, l2; false when no source face is near.
-            // `tried`: the texel is known not to be on hitFace (holdsQuad said so).
-            auto sourceNormal = [&](int x, int y, float l1, float l2, glm::vec3 &n, bool tried) {
+            // `tried`: the texel is known not to be on hitFace (holdsQuad said so); `both`: nor on
+            // the face under its UV.
+            auto sourceNormal = [&](int x, int y, float l1, float l2, glm::vec3 &n, bool tried, bool both) {
                 const glm::vec3 p = tp[0] + l1 * e1 + l2 * e2;
                 const float l0 = 1.0f - l1 - l2;
                 const glm::vec3 facing = l0 * tn[0] + l1 * tn[1] + l2 * tn[2];
@@ -269,7 +270,7 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
                     return true;
                 }
                 const uint32_t start = under[size_t(y - r0) * size_t(width) + size_t(x)];
-                if (start != UINT32_MAX && start != hitFace && walk->holds(p, start, facing, weights)) {
+                if (!both && start != UINT32_MAX && start != hitFace && walk->holds(p, start, facing, weights)) {
                     hitFace = start;
                     n = walk->normalAt(hitFace, weights);
                     return true;
@@ -296,9 +297,9 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
                 const bool centres = zl <= zr;
                 const int from = centres ? std::min(cl, zl) : cl, to = centres ? std::max(cr, zr) : cr;
                 row.start(from, to - from + 1);
-                auto visit = [&](int x, float l1, float l2, bool tried = false) {
+                auto visit = [&](int x, float l1, float l2, bool tried = false, bool both = false) {
                     glm::vec3 n(0.0f);
-                    if (!sourceNormal(x, y, l1, l2, n, tried))
+                    if (!sourceNormal(x, y, l1, l2, n, tried, both))
                         n = glm::vec3(0.0f);
                     if (first)
                         rowFace = hitFace, first = false;
@@ -332,12 +333,16 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
                         // the face under the first's UV, as sourceNormal tries them: the texels up
                         // to the first that is not on that face are done.
                         if (hitFace != UINT32_MAX) {
-                            float f1[4], f2[4];
+                            // The weights of the 4 texels, stepped in doubles as one texel at a
+                            // time does it (l1 and l2 side by side), then rounded to float.
+                            __m128d m = _mm_set_pd(l2, l1);
+                            const __m128d step = _mm_set_pd(a2, a1);
+                            __m128 w[4];
+                            for (__m128 &wk : w)
+                                wk = _mm_cvtpd_ps(m), m = _mm_add_pd(m, step);
+                            const __m128 w01 = _mm_unpacklo_ps(w[0], w[1]), w23 = _mm_unpacklo_ps(w[2], w[3]);
+                            const __m128 L1 = _mm_movelh_ps(w01, w23), L2 = _mm_movehl_ps(w23, w01);
                             __m128 n[3];
-                            double m1 = l1, m2 = l2;
-                            for (int k = 0; k < 4; ++k, m1 += a1, m2 += a2)
-                                f1[k] = float(m1), f2[k] = float(m2);
-                            const __m128 L1 = _mm_loadu_ps(f1), L2 = _mm_loadu_ps(f2);
                             const int lanes = (1 << std::min(4, zr - x + 1)) - 1;
                             int held = tried ? 0 : holdsQuad(*walk, hitFace, L1, L2, quadTarget, n) & lanes;
                             if ((held & 1) == 0) {
@@ -355,7 +360,7 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
                                 row.setQuad(x, L1, L2, n, k);
                                 x += k;
                                 if (k == 4)
-                                    l1 = m1, l2 = m2;
+                                    l1 = _mm_cvtsd_f64(m), l2 = _mm_cvtsd_f64(_mm_unpackhi_pd(m, m));
                                 else
                                     for (int j = 0; j < k; ++j)
                                         l1 += a1, l2 += a2;
@@ -363,7 +368,7 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
                                 continue;
                             }
                             // Neither: the walk.
-                            visit(x, f1[0], f2[0], true);
+                            visit(x, _mm_cvtss_f32(L1), _mm_cvtss_f32(L2), true, true);
                             ++x, l1 += a1, l2 += a2;
                             tried = false;
                             continue;
@@ -381,7 +386,7 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
             rasterRows(q[0], q[1], q[2], kMargin, width, height, visitRow, r0, r1 - 1);
         }
 
-        size_t fromSource = 0, painted = 0;  // local: the bands' counters share cache lines
+        uint32_t fromSource = 0, painted = 0;  // local: the bands' counters share cache lines
         for (size_t t = size_t(r0) * size_t(width); t < size_t(r1) * size_t(width); ++t) {
             fromSource += states[t] >> 1;
             painted += states[t] & 1;
