@@ -87,7 +87,8 @@ struct QuadTarget {
         }
     }
 };
-int holdsQuad(const SurfaceWalk &walk, uint32_t face, __m128 L1, __m128 L2, const QuadTarget &t, __m128 n[3]) {
+__attribute__((always_inline)) inline int holdsQuad(const SurfaceWalk &walk, uint32_t face, __m128 L1, __m128 L2,
+                                                    const QuadTarget &t, __m128 n[3]) {
     const SurfaceWalk::Face &f = walk.record(face);
     auto all = [](float v) { return _mm_set1_ps(v); };
     const __m128 one = all(1.0f), zero = _mm_setzero_ps();
