@@ -203,10 +203,12 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
     }
     const size_t bandCount = bands.start.size() - 1;
     std::vector<size_t> baked(bandCount, 0), flat(bandCount, 0);
-    // Per thread: the band's source faces under the texel centres, a row of a triangle's texels.
+    // Per thread: the band's source faces under the texel centres, a row of a triangle's texels,
+    // the faces the walk's closest-point refinement has measured.
     struct Scratch {
         std::vector<uint32_t> under;
         TexelRow row;
+        SurfaceWalk::Marks marks;
     };
     std::vector<Scratch> scratch(size_t(bandThreads(options.threads, bandCount)));
     runWorkerBands(bandCount, options.threads, [&](size_t band, int worker) {
@@ -220,6 +222,7 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
         // The source face under each texel centre of the band (its UV triangle holds the centre).
         std::vector<uint32_t> &under = scratch[size_t(worker)].under;
         TexelRow &row = scratch[size_t(worker)].row;
+        SurfaceWalk::Marks &marks = scratch[size_t(worker)].marks;
         under.assign(size_t(r1 - r0) * size_t(width), UINT32_MAX);
         for (uint32_t i = sourceBands.start[band]; i < sourceBands.start[band + 1]; ++i)
             fillFacesUnder(sorted->mesh, sourceBands.faces[i], width, height, r0, r1, under.data());
@@ -280,7 +283,7 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
                 if (from == UINT32_MAX &&
                     (from = grid->find(double(l0) * q[0] + double(l1) * q[1] + double(l2) * q[2])) == UINT32_MAX)
                     return false;
-                const SurfaceWalk::Hit hit = walk->project(p, from, facing, 64);
+                const SurfaceWalk::Hit hit = walk->project(p, from, facing, marks, 64);
                 hitFace = hit.face;
                 n = walk->normalAt(hit);
                 return true;

@@ -93,7 +93,8 @@ glm::vec3 closestWeights(const glm::vec3 &p, const glm::vec3 &a, const glm::vec3
 }
 }  // namespace
 
-SurfaceWalk::Hit SurfaceWalk::closestAround(const glm::vec3 &p, uint32_t face, const glm::vec3 &facing) const {
+SurfaceWalk::Hit SurfaceWalk::closestAround(const glm::vec3 &p, uint32_t face, const glm::vec3 &facing,
+                                            Marks &marks) const {
     // Off the source: the closest facing point around the last triangle, while it improves.
     auto point = [&](uint32_t f, const glm::vec3 &weights) {
         const uint32_t *t = &triangles_[3 * size_t(f)];
@@ -108,16 +109,25 @@ SurfaceWalk::Hit SurfaceWalk::closestAround(const glm::vec3 &p, uint32_t face, c
     // The last triangle is the answer only if it faces the same way or none around does.
     float bestDistance = glm::dot(faces_[face].normal, facing) > 0.0f ? glm::dot(q - p, q - p) : INFINITY;
     // Faces already measured (a face shares the fans of two or three corners, and rounds overlap)
-    // are not measured again: each lost to a best distance no larger than today's.
-    constexpr int kSeen = 64;
-    uint32_t seen[kSeen] = {face};
-    int seenCount = 1;
+    // are not measured again. Every one is remembered (a stamp per face, this call's generation):
+    // measuring one again would give the same distance, and it cannot win. A measured face either
+    // lost to the best distance of its time (d >= it), or became the best and later lost the best
+    // to a strictly smaller distance; the best distance only decreases, the test is strict, and the
+    // current best face is skipped anyway, so it loses again. Hence the same answer as measuring it
+    // again (or as remembering only the first 64, as this did before).
+    if (marks.stamp.size() != faces_.size())
+        marks.stamp.assign(faces_.size(), 0), marks.generation = 0;
+    if (++marks.generation == 0) {  // wrapped: old stamps could match again
+        std::fill(marks.stamp.begin(), marks.stamp.end(), 0);
+        marks.generation = 1;
+    }
+    uint32_t *const stamp = marks.stamp.data();
+    const uint32_t generation = marks.generation;
+    stamp[face] = generation;
     auto measured = [&](uint32_t f) {
-        for (int i = 0; i < seenCount; ++i)
-            if (seen[i] == f)
-                return true;
-        if (seenCount < kSeen)
-            seen[seenCount++] = f;
+        if (stamp[f] == generation)
+            return true;
+        stamp[f] = generation;
         return false;
     };
     for (int round = 0; round < 16; ++round) {

@@ -53,8 +53,15 @@ public:
         return (w.x >= 0.0f) & (w1 >= 0.0f) & (w2 >= 0.0f) & (height * height <= f.nearPlane) &
                (glm::dot(f.normal, facing) > 0.0f);
     }
+    // A caller's per-thread scratch for the closest-point refinement: which faces it has measured,
+    // as a stamp per source face (sized on first use) and the current generation (O(1) membership,
+    // nothing cleared between calls).
+    struct Marks {
+        std::vector<uint32_t> stamp;
+        uint32_t generation = 0;
+    };
     // `start` must be a face index; at most `maxSteps` moves. Inline: the bakers call it per texel.
-    Hit project(const glm::vec3 &p, uint32_t start, const glm::vec3 &facing, int maxSteps = 16) const {
+    Hit project(const glm::vec3 &p, uint32_t start, const glm::vec3 &facing, Marks &marks, int maxSteps = 16) const {
         uint32_t face = start, previous = UINT32_MAX;
         for (int step = 0;; ++step) {
             const Face &f = faces_[face];
@@ -81,7 +88,7 @@ public:
             previous = face;
             face = across / 3;
         }
-        return closestAround(p, face, facing);
+        return closestAround(p, face, facing, marks);
     }
     // The vertex normals interpolated at a hit (not normalised).
     glm::vec3 normalAt(const Hit &hit) const { return normalAt(hit.face, hit.weights); }
@@ -103,7 +110,7 @@ public:
     const glm::vec3 *cornerNormals(uint32_t face) const { return &cornerNormals_[3 * size_t(face)]; }
 
 private:
-    Hit closestAround(const glm::vec3 &p, uint32_t face, const glm::vec3 &facing) const;
+    Hit closestAround(const glm::vec3 &p, uint32_t face, const glm::vec3 &facing, Marks &marks) const;
     std::vector<Face> faces_;
     std::vector<glm::vec3> cornerNormals_;  // 3 per face
     const glm::vec3 *positions_;
