@@ -280,6 +280,10 @@ void rasterCentres(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, int width, int heig
     });
 }
 
+// Triangles whose conservative texels span fewer columns than this are rasterised by testing
+// each texel of their bounding box (rasterRows).
+constexpr int kNarrowRows = 4;
+
 // Both at once, row by row, for a bake: visitRow(y, cl, cr, zl, zr) for every row with
 // conservative texels cl..cr (rasterConservativeSpans, margin > -0.5), of which zl..zr
 // (rasterCentres; zl > zr: none) hold their centre inside the triangle.
@@ -294,13 +298,38 @@ void rasterRows(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double margin, int wid
     const raster_detail::CentreTest centre(s, width, height);
     if (conservative.x0 > conservative.x1)
         return;
+    const bool centres = centre.x0 <= centre.x1;
+    if (conservative.x1 - conservative.x0 < kNarrowRows) {
+        // A narrow triangle (most of them at a few texels per voxel): each row's texels tested one
+        // by one, cheaper than solving its rows. The same spans: each test is monotonic in x along
+        // a row (rounding keeps the order), so the texels it accepts are one interval, which the
+        // row solver finds exactly.
+        for (int y = std::max(conservative.y0, rowFrom); y <= std::min(conservative.y1, rowTo); ++y) {
+            int cl = conservative.x0, cr = conservative.x1, zl = 0, zr = -1;
+            while (cl <= cr && !conservative(cl, y))
+                ++cl;
+            while (cr >= cl && !conservative(cr, y))
+                --cr;
+            if (centres && y >= centre.y0 && y <= centre.y1) {
+                zl = centre.x0, zr = centre.x1;
+                while (zl <= zr && !centre(zl, y))
+                    ++zl;
+                while (zr >= zl && !centre(zr, y))
+                    --zr;
+                if (zl > zr)
+                    zl = 0, zr = -1;
+            }
+            if (cl <= cr || zl <= zr)
+                visitRow(y, cl, cr, zl, zr);
+        }
+        return;
+    }
     const double zero[3] = {0, 0, 0};
     double inverse[3];
     raster_detail::edgeInverses(s, inverse);
     const raster_detail::RowSolver conservativeRows(s, conservative.reach, inverse, conservative.x0, conservative.x1,
                                                     conservative.y0);
     const raster_detail::RowSolver centreRows(s, zero, inverse, centre.x0, centre.x1, centre.y0);
-    const bool centres = centre.x0 <= centre.x1;
     for (int y = std::max(conservative.y0, rowFrom); y <= std::min(conservative.y1, rowTo); ++y) {
         int cl, cr, zl = 0, zr = -1;
         raster_detail::rowSpan(s, conservative.reach, conservativeRows, y, conservative, cl, cr);
