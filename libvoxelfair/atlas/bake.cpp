@@ -346,7 +346,8 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
     // their centres inside the face. Where two thin faces of different colours would share such
     // a texel, the atlas gave one of them a chart of its own beforehand (crowded_faces.h: points
     // closer than sqrt(2) + 0.01 texels), so the order does not matter.
-    auto texelOf = [](double v, int n) { return std::clamp(int(std::floor(v)), 0, n - 1); };
+    // floor(v) clamped onto 0..n-1, as the truncation of v clamped (the same for every finite v).
+    auto texelOf = [](double v, int n) { return int(std::clamp(v, 0.0, double(n - 1))); };
     for (uint32_t f : thin) {
         load(f, q);
         faceInteriorPoints(q, points);
