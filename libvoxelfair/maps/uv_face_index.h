@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -64,38 +65,67 @@ void underSpans(const glm::vec2 *uv, int width, int height, int r0, int r1, Span
     if (!(area != 0.0f) || !std::isfinite(area))
         return;
     const float lo = std::min({q[0].y, q[1].y, q[2].y}), hi = std::max({q[0].y, q[1].y, q[2].y});
-    const int y0 = std::max(r0, int(std::ceil(lo - 0.5f))), y1 = std::min(r1 - 1, int(std::floor(hi - 0.5f)));
+    // ceil and floor of an x within the int range: truncation, then one step (exact: a float that
+    // large is a whole number). Bounds beyond the rows or the image are clamped first (the range
+    // or span is empty, or its end clamped, either way).
+    auto ceilOf = [](float x) {
+        const int t = int(x);
+        return t + int(float(t) < x);
+    };
+    auto floorOf = [](float x) {
+        const int t = int(x);
+        return t - int(float(t) > x);
+    };
+    const float rowLo = float(r0 - 1), rowHi = float(r1);
+    const int y0 = std::max(r0, ceilOf(std::clamp(lo - 0.5f, rowLo, rowHi))),
+              y1 = std::min(r1 - 1, floorOf(std::clamp(hi - 0.5f, rowLo, rowHi)));
+    if (y0 > y1)
+        return;  // no row of [r0, r1) (faces are banded conservatively)
     // Edge a -> b bounds the inside where sign(area) * cross(b - a, c - a) >= 0: for a row, x
     // >= or <= its crossing a.x + (cy - a.y) ex / ey (left or right bound by the sign of
     // -sign(area) ey); a horizontal edge bounds the rows instead (cy on its inner side).
+    // A triangle of nonzero area has one or two left bounds, one or two right bounds and at most
+    // one horizontal edge (its edges' ey sum to 0). Each side's bounds are taken in edge order, a
+    // single one twice (max(max(-1, c), c) = max(-1, c), NaN included): per row no branch on the
+    // edges, the same bounds as testing each edge's side in turn.
     float ax[3], ay[3], inverse[3];
-    int side[3];  // 1: left bound, -1: right bound, 0: horizontal
-    float rowSign[3];
+    int left[2], right[2], leftCount = 0, rightCount = 0, horizontal = -1;
+    float rowSign = 0.0f;
     const float s = area > 0.0f ? 1.0f : -1.0f;
     for (int k = 0; k < 3; ++k) {
         const glm::vec2 a = q[k], b = q[(k + 1) % 3];
         const float ex = b.x - a.x, ey = b.y - a.y;
         ax[k] = a.x, ay[k] = a.y;
-        side[k] = -s * ey > 0.0f ? 1 : (-s * ey < 0.0f ? -1 : 0);
         inverse[k] = ey != 0.0f ? ex / ey : 0.0f;
-        rowSign[k] = s * ex;  // horizontal edge: inside where s ex (cy - a.y) >= 0
+        if (-s * ey > 0.0f)
+            left[leftCount++] = k;
+        else if (-s * ey < 0.0f)
+            right[rightCount++] = k;
+        else
+            horizontal = k, rowSign = s * ex;  // inside where s ex (cy - a.y) >= 0
     }
+    if (leftCount == 0 || rightCount == 0)
+        return;  // not reached for a finite nonzero area
+    if (leftCount == 1)
+        left[1] = left[0];
+    if (rightCount == 1)
+        right[1] = right[0];
+    // The bounds' edges in locals (kept in registers through the rows).
+    const float lx0 = ax[left[0]], ly0 = ay[left[0]], li0 = inverse[left[0]];
+    const float lx1 = ax[left[1]], ly1 = ay[left[1]], li1 = inverse[left[1]];
+    const float rx0 = ax[right[0]], ry0 = ay[right[0]], ri0 = inverse[right[0]];
+    const float rx1 = ax[right[1]], ry1 = ay[right[1]], ri1 = inverse[right[1]];
+    const float horizontalY = horizontal >= 0 ? ay[horizontal] : 0.0f;
     for (int y = y0; y <= y1; ++y) {
         const float cy = float(y) + 0.5f;
-        float xl = -1.0f, xr = float(width);
-        bool empty = false;
-        for (int k = 0; k < 3; ++k) {
-            const float crossing = ax[k] + (cy - ay[k]) * inverse[k];
-            if (side[k] > 0)
-                xl = std::max(xl, crossing);
-            else if (side[k] < 0)
-                xr = std::min(xr, crossing);
-            else if (rowSign[k] * (cy - ay[k]) < 0.0f)
-                empty = true;
-        }
+        if (horizontal >= 0 && rowSign * (cy - horizontalY) < 0.0f)
+            continue;
+        const float xl = std::max(std::max(-1.0f, lx0 + (cy - ly0) * li0), lx1 + (cy - ly1) * li1);
+        const float xr = std::min(std::min(float(width), rx0 + (cy - ry0) * ri0), rx1 + (cy - ry1) * ri1);
         // Texels whose centre x + 0.5 lies in [xl, xr].
-        const int a = std::max(0, int(std::ceil(xl - 0.5f))), b = std::min(width - 1, int(std::floor(xr - 0.5f)));
-        if (!empty && a <= b)
+        const int a = std::max(0, ceilOf(std::min(xl, float(width)) - 0.5f)),
+                  b = std::min(width - 1, floorOf(std::max(xr, -1.0f) - 0.5f));
+        if (a <= b)
             span(y, a, b);
     }
 }
@@ -104,8 +134,19 @@ void underSpans(const glm::vec2 *uv, int width, int height, int r0, int r1, Span
 // for the centres inside face `face`'s UV triangle (later faces overwrite earlier ones).
 inline void fillFacesUnder(const NormalBakeMesh &mesh, uint32_t face, int width, int height, int r0, int r1,
                            uint32_t *rows) {
+    const uint32_t four[4] = {face, face, face, face};
     underSpans(mesh.wedgeUv + 3 * size_t(face), width, height, r0, r1, [&](int y, int xl, int xr) {
-        std::fill_n(&rows[size_t(y - r0) * size_t(width) + size_t(xl)], xr - xl + 1, face);
+        // Spans are a few texels: 4 at a time, the last 4 overlapping, else one by one.
+        uint32_t *const to = &rows[size_t(y - r0) * size_t(width) + size_t(xl)];
+        const int n = xr - xl + 1;
+        if (n >= 4) {
+            for (int i = 0; i + 4 < n; i += 4)
+                std::memcpy(to + i, four, sizeof four);
+            std::memcpy(to + n - 4, four, sizeof four);
+        } else {
+            for (int i = 0; i < n; ++i)
+                to[i] = face;
+        }
     });
 }
 
