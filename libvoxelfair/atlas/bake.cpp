@@ -346,14 +346,14 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
     // their centres inside the face. Where two thin faces of different colours would share such
     // a texel, the atlas gave one of them a chart of its own beforehand (crowded_faces.h: points
     // closer than sqrt(2) + 0.01 texels), so the order does not matter.
-    // floor(v) clamped onto 0..n-1, as the truncation of v clamped (the same for every finite v).
-    auto texelOf = [](double v, int n) { return int(std::clamp(v, 0.0, double(n - 1))); };
     for (uint32_t f : thin) {
         load(f, q);
         faceInteriorPoints(q, points);
         for (const glm::dvec2 &p : points) {
-            const int x0 = texelOf(p.x - kUvRounding, width), x1 = texelOf(p.x + kUvRounding, width);
-            const int y0 = texelOf(p.y - kUvRounding, height), y1 = texelOf(p.y + kUvRounding, height);
+            const int x0 = clampToInt(p.x - kUvRounding, 0, width - 1),
+                      x1 = clampToInt(p.x + kUvRounding, 0, width - 1);
+            const int y0 = clampToInt(p.y - kUvRounding, 0, height - 1),
+                      y1 = clampToInt(p.y + kUvRounding, 0, height - 1);
             for (int y = y0; y <= y1; ++y)
                 for (int x = x0; x <= x1; ++x)
                     canvas.paint(canvas.index(x, y), mesh.faceColours[f]);

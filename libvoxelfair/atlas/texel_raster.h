@@ -44,6 +44,22 @@ inline double faceInteriorPoints(const glm::dvec2 q[3], glm::dvec2 points[4]) {
     return std::abs(doubleArea(q[0], q[1], q[2])) / perimeter;
 }
 
+// v clamped onto [lo, hi], then truncated (its floor there when lo >= 0).
+inline int clampToInt(double v, int lo, int hi) { return int(std::clamp(v, double(lo), double(hi))); }
+
+// floor and ceil of a float or double v with |v| < 2^31: truncation, then one step (exact: a
+// float or double too large to have a fraction is a whole number, so the step is 0 there).
+template <class Real>
+inline int floorToInt(Real v) {
+    const int i = int(v);
+    return i - int(Real(i) > v);
+}
+template <class Real>
+inline int ceilToInt(Real v) {
+    const int i = int(v);
+    return i + int(Real(i) < v);
+}
+
 namespace raster_detail {
 struct Edge {
     double ax, ay, ex, ey;
@@ -75,13 +91,6 @@ inline bool setup(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, Setup &s) {
     s.maxY = std::max({a.y, b.y, c.y});
     return true;
 }
-inline int clampToInt(double v, int lo, int hi) { return int(std::clamp(v, double(lo), double(hi))); }
-
-inline int floorToInt(double v) {  // |v| < 2^31
-    const int i = int(v);
-    return i - int(i > v);
-}
-
 // A triangle's rows solved in closed form for one test (edge i's inequality at(x, y) + reach[i]
 // >= 0, or the centre test's > 0 with its top-left rule on 0). For an edge with k = -ey != 0 the
 // test changes sign at x = t(y) on row y; t is linear in y, so it is kept as its value on the

@@ -11,6 +11,7 @@
 // UVs are scaled to texel space: u * width, v * height (rows from v = 0 up).
 #pragma once
 
+#include "atlas/texel_raster.h"
 #include "maps/normal_bake.h"
 
 #include <algorithm>
@@ -65,20 +66,11 @@ void underSpans(const glm::vec2 *uv, int width, int height, int r0, int r1, Span
     if (!(area != 0.0f) || !std::isfinite(area))
         return;
     const float lo = std::min({q[0].y, q[1].y, q[2].y}), hi = std::max({q[0].y, q[1].y, q[2].y});
-    // ceil and floor of an x within the int range: truncation, then one step (exact: a float that
-    // large is a whole number). Bounds beyond the rows or the image are clamped first (the range
-    // or span is empty, or its end clamped, either way).
-    auto ceilOf = [](float x) {
-        const int t = int(x);
-        return t + int(float(t) < x);
-    };
-    auto floorOf = [](float x) {
-        const int t = int(x);
-        return t - int(float(t) > x);
-    };
+    // Bounds beyond the rows or the image are clamped before their ceil or floor (the range or
+    // span is empty, or its end clamped, either way), so they are within the int range.
     const float rowLo = float(r0 - 1), rowHi = float(r1);
-    const int y0 = std::max(r0, ceilOf(std::clamp(lo - 0.5f, rowLo, rowHi))),
-              y1 = std::min(r1 - 1, floorOf(std::clamp(hi - 0.5f, rowLo, rowHi)));
+    const int y0 = std::max(r0, ceilToInt(std::clamp(lo - 0.5f, rowLo, rowHi))),
+              y1 = std::min(r1 - 1, floorToInt(std::clamp(hi - 0.5f, rowLo, rowHi)));
     if (y0 > y1)
         return;  // no row of [r0, r1) (faces are banded conservatively)
     // Edge a -> b bounds the inside where sign(area) * cross(b - a, c - a) >= 0: for a row, x
@@ -105,7 +97,8 @@ void underSpans(const glm::vec2 *uv, int width, int height, int r0, int r1, Span
             horizontal = k, rowSign = s * ex;  // inside where s ex (cy - a.y) >= 0
     }
     if (leftCount == 0 || rightCount == 0)
-        return;  // not reached for a finite nonzero area
+        return;  // unreached (the area test leaves finite triangles of nonzero area, which have a
+                 // bound on each side: the sign of a float difference is exact); guards left[0]
     if (leftCount == 1)
         left[1] = left[0];
     if (rightCount == 1)
@@ -123,8 +116,8 @@ void underSpans(const glm::vec2 *uv, int width, int height, int r0, int r1, Span
         const float xl = std::max(std::max(-1.0f, lx0 + (cy - ly0) * li0), lx1 + (cy - ly1) * li1);
         const float xr = std::min(std::min(float(width), rx0 + (cy - ry0) * ri0), rx1 + (cy - ry1) * ri1);
         // Texels whose centre x + 0.5 lies in [xl, xr].
-        const int a = std::max(0, ceilOf(std::min(xl, float(width)) - 0.5f)),
-                  b = std::min(width - 1, floorOf(std::max(xr, -1.0f) - 0.5f));
+        const int a = std::max(0, ceilToInt(std::min(xl, float(width)) - 0.5f)),
+                  b = std::min(width - 1, floorToInt(std::max(xr, -1.0f) - 0.5f));
         if (a <= b)
             span(y, a, b);
     }
