@@ -203,11 +203,11 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
     }
     const size_t bandCount = bands.start.size() - 1;
     std::vector<size_t> baked(bandCount, 0), flat(bandCount, 0);
-    // Per thread: the band's source faces under the texel centres, a row of a triangle's texels,
-    // the faces the walk's closest-point refinement has measured.
+    // Per thread: the band's source faces under the texel centres, a triangle's texels, the faces
+    // the walk's closest-point refinement has measured.
     struct Scratch {
         std::vector<uint32_t> under;
-        TexelRow row;
+        TexelBatch batch;
         SurfaceWalk::Marks marks;
     };
     std::vector<Scratch> scratch(size_t(bandThreads(options.threads, bandCount)));
@@ -221,7 +221,7 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
         glm::dvec2 q[3];
         // The source face under each texel centre of the band (its UV triangle holds the centre).
         std::vector<uint32_t> &under = scratch[size_t(worker)].under;
-        TexelRow &row = scratch[size_t(worker)].row;
+        TexelBatch &batch = scratch[size_t(worker)].batch;
         SurfaceWalk::Marks &marks = scratch[size_t(worker)].marks;
         under.assign(size_t(r1 - r0) * size_t(width), UINT32_MAX);
         for (uint32_t i = sourceBands.start[band]; i < sourceBands.start[band + 1]; ++i)
@@ -295,19 +295,20 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
                 const double py = y + 0.5 - q[0].y;
                 hitFace = rowFace;
                 bool first = true;
-                // The row's texels are gathered, then solved 4 at a time and written (the
-                // triangle's texels are distinct: written after each row, they keep the order of
-                // claims).
+                // The row's texels are gathered, the triangle's rows solved and written at once
+                // (its texels are distinct, one row each: a row reads only the states of its own
+                // texels, which no other row of the triangle writes, so the order of claims is
+                // kept).
                 const bool centres = zl <= zr;
                 const int from = centres ? std::min(cl, zl) : cl, to = centres ? std::max(cr, zr) : cr;
-                row.start(from, to - from + 1);
+                batch.startRow(stateRow, imageRow, from, to - from + 1);
                 auto visit = [&](int x, float l1, float l2, bool tried = false, bool both = false) {
                     glm::vec3 n(0.0f);
                     if (!sourceNormal(x, y, l1, l2, n, tried, both))
                         n = glm::vec3(0.0f);
                     if (first)
                         rowFace = hitFace, first = false;
-                    row.set(x, l1, l2, n);
+                    batch.set(x, l1, l2, n);
                 };
                 // Texels the triangle only overlaps, if no centre claimed them (no centre of this
                 // face lies among them, so their order among the centres keeps the order of
@@ -361,7 +362,7 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
                                 int k = 0;  // the lanes held, up to the first that is not
                                 while (k < 4 && (held >> k & 1) != 0)
                                     ++k;
-                                row.setQuad(x, L1, L2, n, k);
+                                batch.setQuad(x, L1, L2, n, k);
                                 x += k;
                                 if (k == 4)
                                     l1 = _mm_cvtsd_f64(m), l2 = _mm_cvtsd_f64(_mm_unpackhi_pd(m, m));
@@ -385,9 +386,10 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
                     for (int x = std::max(zr + 1, cl); x <= cr; ++x)
                         overlap(x);
                 }
-                writeTexelRow(targetFrame, row, states + stateRow, rgba + imageRow);
             };
+            batch.clear();
             rasterRows(q[0], q[1], q[2], kMargin, width, height, visitRow, r0, r1 - 1);
+            writeTexelBatch(targetFrame, batch, states, rgba);
         }
 
         uint32_t fromSource = 0, painted = 0;  // local: the bands' counters share cache lines

@@ -45,44 +45,141 @@ uint32_t solveTexel(const TargetFrame &fr, float l1, float l2, const glm::vec3 &
            uint32_t(encodeLane(z * scale)) << 16 | 0xFF000000u;
 }
 
-void writeTexelRow(const TargetFrame &frame, const TexelRow &row, uint8_t *states, uint32_t *rgba) {
-    int i = 0;
-    uint8_t *const s = states + row.x0;
-    uint32_t *const c = rgba + row.x0;
-#if VOXELFAIR_SSE2
-    const FrameLanes lanes(frame);
-    for (; i < row.size; i += 4) {
+#if VOXELFAIR_SSE2 && (defined(__GNUC__) || defined(__clang__)) && (defined(__x86_64__) || defined(__i386__))
+#define VOXELFAIR_AVX2_DISPATCH 1
+#include <immintrin.h>
+namespace {
+
+// solveQuad on 8 lanes (AVX2 when the CPU has it, chosen at run time): the same operations in
+// the same order, without fused multiply-adds (the target is "avx2" alone), so every lane gives
+// solveQuad's and solveTexel's colour bit for bit.
+#define VOXELFAIR_AVX2 __attribute__((target("avx2")))
+VOXELFAIR_AVX2 inline __m256 dot8(const __m256 *u, const __m256 *v) {
+    return _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(u[0], v[0]), _mm256_mul_ps(u[1], v[1])),
+                         _mm256_mul_ps(u[2], v[2]));
+}
+// cross(u, v) component a: u[a+1] v[a+2] - u[a+2] v[a+1].
+VOXELFAIR_AVX2 inline void cross8(const __m256 *u, const __m256 *v, __m256 *out) {
+    for (int a = 0; a < 3; ++a)
+        out[a] =
+            _mm256_sub_ps(_mm256_mul_ps(u[(a + 1) % 3], v[(a + 2) % 3]), _mm256_mul_ps(u[(a + 2) % 3], v[(a + 1) % 3]));
+}
+// encodeLane of c * scale on 8 lanes.
+VOXELFAIR_AVX2 inline __m256i encode8(__m256 c, __m256 scale) {
+    const __m256 v =
+        _mm256_add_ps(_mm256_mul_ps(_mm256_mul_ps(c, scale), _mm256_set1_ps(127.5f)), _mm256_set1_ps(128.0f));
+    const __m256 low = _mm256_and_ps(_mm256_cmp_ps(v, _mm256_setzero_ps(), _CMP_GT_OQ), v);
+    return _mm256_cvttps_epi32(_mm256_min_ps(low, _mm256_set1_ps(255.0f)));
+}
+VOXELFAIR_AVX2 void solveOcts(const TargetFrame &fr, TexelBatch &b) {
+    const __m256 one = _mm256_set1_ps(1.0f), signBit = _mm256_set1_ps(-0.0f);
+    __m256 fn[3][3], ft[3][3];
+    for (int k = 0; k < 3; ++k)
+        for (int a = 0; a < 3; ++a)
+            fn[k][a] = _mm256_set1_ps(fr.n[k][a]), ft[k][a] = _mm256_set1_ps(fr.t[k][a]);
+    const __m256 sign = _mm256_set1_ps(fr.sign);
+    for (int i = 0; i < b.size; i += 8) {
         const size_t k = size_t(i);
-        const __m128 n[3] = {_mm_loadu_ps(&row.nx[k]), _mm_loadu_ps(&row.ny[k]), _mm_loadu_ps(&row.nz[k])};
-        int solved = 0;
-        alignas(16) uint32_t colour[4];
-        _mm_store_si128(reinterpret_cast<__m128i *>(colour),
-                        solveQuad(lanes, _mm_loadu_ps(&row.l1[k]), _mm_loadu_ps(&row.l2[k]), n, solved));
-        uint32_t kept;
-        std::memcpy(&kept, &row.keep[k], 4);
-        if (kept == 0x01010101u && solved == 15 && i + 4 <= row.size) {
-            std::memcpy(&c[k], colour, sizeof colour);
-            std::memset(&s[k], kTexelPainted | kTexelFromSource, 4);
-            continue;
+        const __m256 l1 = _mm256_loadu_ps(&b.l1[k]), l2 = _mm256_loadu_ps(&b.l2[k]);
+        const __m256 n[3] = {_mm256_loadu_ps(&b.nx[k]), _mm256_loadu_ps(&b.ny[k]), _mm256_loadu_ps(&b.nz[k])};
+        const __m256 l0 = _mm256_sub_ps(_mm256_sub_ps(one, l1), l2);
+        __m256 N[3], T[3];
+        for (int a = 0; a < 3; ++a) {
+            N[a] = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(l0, fn[0][a]), _mm256_mul_ps(l1, fn[1][a])),
+                                 _mm256_mul_ps(l2, fn[2][a]));
+            T[a] = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(l0, ft[0][a]), _mm256_mul_ps(l1, ft[1][a])),
+                                 _mm256_mul_ps(l2, ft[2][a]));
         }
-        for (int j = 0; j < 4 && i + j < row.size; ++j)
-            if (row.keep[k + size_t(j)] != 0) {
-                const bool ok = (solved >> j & 1) != 0;
-                s[k + size_t(j)] = uint8_t(kTexelPainted | (ok ? kTexelFromSource : 0));
-                if (ok)
-                    c[k + size_t(j)] = colour[j];
-            }
+        const __m256 ni = _mm256_div_ps(one, _mm256_sqrt_ps(dot8(N, N))),
+                     ti = _mm256_div_ps(one, _mm256_sqrt_ps(dot8(T, T)));
+        for (int a = 0; a < 3; ++a)
+            N[a] = _mm256_mul_ps(N[a], ni), T[a] = _mm256_mul_ps(T[a], ti);
+        __m256 r1[3], B[3], r0[3], r2[3];
+        cross8(N, T, r1);
+        for (int a = 0; a < 3; ++a)
+            B[a] = _mm256_mul_ps(sign, r1[a]);
+        cross8(B, N, r0);
+        cross8(T, B, r2);
+        const __m256 x = dot8(r0, n), y = dot8(r1, n), z = dot8(r2, n);
+        const __m256 det = dot8(T, r0), length = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(x, x), _mm256_mul_ps(y, y)),
+                                                               _mm256_mul_ps(z, z));
+        const int ok = _mm256_movemask_ps(
+            _mm256_and_ps(_mm256_cmp_ps(_mm256_andnot_ps(signBit, det), _mm256_set1_ps(1e-6f), _CMP_GT_OQ),
+                          _mm256_cmp_ps(length, _mm256_setzero_ps(), _CMP_GT_OQ)));
+        const __m256 scale = _mm256_div_ps(_mm256_or_ps(_mm256_and_ps(det, signBit), one), _mm256_sqrt_ps(length));
+        const __m256i colour = _mm256_or_si256(
+            _mm256_or_si256(encode8(x, scale), _mm256_slli_epi32(encode8(y, scale), 8)),
+            _mm256_or_si256(_mm256_slli_epi32(encode8(z, scale), 16), _mm256_set1_epi32(int(0xFF000000u))));
+        _mm256_storeu_si256(reinterpret_cast<__m256i *>(&b.colour[k]), colour);
+        for (int j = 0; j < 8; ++j)
+            b.solved[k + size_t(j)] = uint8_t(ok >> j & 1);
+    }
+}
+#undef VOXELFAIR_AVX2
+
+const bool kHasAvx2 = __builtin_cpu_supports("avx2");
+
+}  // namespace
+#endif
+
+void writeTexelBatch(const TargetFrame &frame, TexelBatch &b, uint8_t *states, uint32_t *rgba) {
+    // The solve: every lane (unkept ones too, their answers unused), full vectors over the batch.
+#if VOXELFAIR_SSE2
+#if VOXELFAIR_AVX2_DISPATCH
+    if (kHasAvx2) {
+        solveOcts(frame, b);
+    } else
+#endif
+    {
+        const FrameLanes lanes(frame);
+        for (int i = 0; i < b.size; i += 4) {
+            const size_t k = size_t(i);
+            const __m128 n[3] = {_mm_loadu_ps(&b.nx[k]), _mm_loadu_ps(&b.ny[k]), _mm_loadu_ps(&b.nz[k])};
+            int ok = 0;
+            _mm_storeu_si128(reinterpret_cast<__m128i *>(&b.colour[k]),
+                             solveQuad(lanes, _mm_loadu_ps(&b.l1[k]), _mm_loadu_ps(&b.l2[k]), n, ok));
+            for (int j = 0; j < 4; ++j)
+                b.solved[k + size_t(j)] = uint8_t(ok >> j & 1);
+        }
+    }
+#else
+    for (int i = 0; i < b.size; ++i) {
+        const size_t k = size_t(i);
+        bool ok = false;
+        if (b.keep[k] != 0)
+            b.colour[k] = solveTexel(frame, b.l1[k], b.l2[k], glm::vec3(b.nx[k], b.ny[k], b.nz[k]), ok);
+        b.solved[k] = ok ? 1 : 0;
     }
 #endif
-    for (; i < row.size; ++i) {
-        const size_t k = size_t(i);
-        if (row.keep[k] == 0)
-            continue;
-        bool ok = false;
-        const uint32_t colour = solveTexel(frame, row.l1[k], row.l2[k], glm::vec3(row.nx[k], row.ny[k], row.nz[k]), ok);
-        s[k] = uint8_t(kTexelPainted | (ok ? kTexelFromSource : 0));
-        if (ok)
-            c[k] = colour;
+    // The writes, row by row: 4 texels at once where all are kept and solved.
+    for (const TexelBatch::Row &row : b.rows) {
+        uint8_t *const s = states + row.state + row.x0;
+        uint32_t *const c = rgba + row.image + row.x0;
+        const uint8_t *const keep = &b.keep[size_t(row.begin)], *const solved = &b.solved[size_t(row.begin)];
+        const uint32_t *const colour = &b.colour[size_t(row.begin)];
+        int i = 0;
+        for (; i + 4 <= row.size; i += 4) {
+            uint32_t kept, ok;
+            std::memcpy(&kept, keep + i, 4);
+            std::memcpy(&ok, solved + i, 4);
+            if ((kept & ok) == 0x01010101u) {
+                std::memcpy(&c[i], colour + i, 16);
+                std::memset(&s[i], kTexelPainted | kTexelFromSource, 4);
+                continue;
+            }
+            for (int j = i; j < i + 4; ++j)
+                if (keep[j] != 0) {
+                    s[j] = uint8_t(kTexelPainted | (solved[j] != 0 ? kTexelFromSource : 0));
+                    if (solved[j] != 0)
+                        c[j] = colour[j];
+                }
+        }
+        for (; i < row.size; ++i)
+            if (keep[i] != 0) {
+                s[i] = uint8_t(kTexelPainted | (solved[i] != 0 ? kTexelFromSource : 0));
+                if (solved[i] != 0)
+                    c[i] = colour[i];
+            }
     }
 }
 

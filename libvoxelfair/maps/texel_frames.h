@@ -4,14 +4,16 @@
 // (normal_bake.h): the exact inverse of the glTF / Blender / MikkTSpace pixel shader.
 // solveTexel solves one texel; solveQuad (SSE2) solves 4 texels at once, each lane repeating
 // solveTexel's float operations in its order, so that both give the same colour bit for bit
-// (texel_frames.cpp is compiled with -fno-math-errno: sqrt without errno). A TexelRow gathers the
-// texels of one row of a triangle, solved 4 at a time and written by writeTexelRow.
+// (texel_frames.cpp is compiled with -fno-math-errno: sqrt without errno). A TexelBatch gathers the
+// texels of a triangle, solved 4 (SSE2) or 8 (AVX2, chosen at run time) at a time and written
+// by writeTexelBatch.
 #pragma once
 
 #include "base/simd_variant.h"
 
 #include <cstddef>
 #include <cstdint>
+#include <algorithm>
 #include <cstring>
 #include <vector>
 
@@ -92,41 +94,60 @@ inline __m128i solveQuad(const FrameLanes &fr, __m128 l1, __m128 l2, const __m12
 }
 #endif
 
-// Texels [x0, x0 + size) of one image row: weights, source normal, and whether the texel is
-// written (kept); one per thread, grown once.
-struct TexelRow {
-    std::vector<float> l1, l2, nx, ny, nz;  // 4 more than size: a quad's lanes past the end
-    std::vector<uint8_t> keep;
-    int x0 = 0, size = 0;
-    void start(int first, int count) {
-        if (l1.size() < size_t(count) + 4) {
+// The texels of one target triangle, gathered row by row (texels [x0, x0 + size) of each row,
+// rows one after another): weights, source normal, and whether the texel is written (kept); one
+// per thread, grown once. Solved all at once (writeTexelBatch): full vectors whatever the rows'
+// lengths.
+struct TexelBatch {
+    static constexpr int kPad = 8;          // lanes past the end a vector may touch
+    std::vector<float> l1, l2, nx, ny, nz;  // size + kPad
+    std::vector<uint8_t> keep;              // size + kPad
+    std::vector<uint32_t> colour;           // the solve's output, size + kPad
+    std::vector<uint8_t> solved;            // 1 where solved, size + kPad
+    struct Row {
+        uint32_t state, image;  // offsets of the row's x = 0 in the states and the image
+        int x0, begin, size;    // texels x0 .. x0 + size - 1 at begin .. begin + size - 1
+    };
+    std::vector<Row> rows;
+    int size = 0;
+    std::ptrdiff_t base = 0;  // the current row's x = 0 in the arrays (begin - x0)
+    void clear() { rows.clear(), size = 0; }
+    void startRow(uint32_t stateRow, uint32_t imageRow, int first, int count) {
+        const size_t need = size_t(size) + size_t(count) + kPad;
+        if (l1.size() < need) {
+            const size_t grown = std::max(need, 2 * l1.size());
             for (auto *v : {&l1, &l2, &nx, &ny, &nz})
-                v->resize(size_t(count) + 4, 0.0f);
-            keep.resize(size_t(count) + 4);
+                v->resize(grown, 0.0f);
+            keep.resize(grown), colour.resize(grown), solved.resize(grown);
         }
-        x0 = first, size = count;
-        std::memset(keep.data(), 0, size_t(count));
+        rows.push_back({stateRow, imageRow, first, size, count});
+        std::memset(&keep[size_t(size)], 0, size_t(count));
+        base = std::ptrdiff_t(size) - first;
+        size += count;
     }
     void set(int x, float w1, float w2, const glm::vec3 &n) {
-        const size_t i = size_t(x - x0);
+        const size_t i = size_t(base + x);
         l1[i] = w1, l2[i] = w2, nx[i] = n.x, ny[i] = n.y, nz[i] = n.z, keep[i] = 1;
     }
 #if VOXELFAIR_SSE2
-    // Texels x .. x + 3, the first `kept` of them kept.
+    // Texels x .. x + 3 of the current row, the first `kept` (0 to 4) of them kept, the others
+    // not (they are set again later, or lie past the row's end: the next row starts there).
     void setQuad(int x, __m128 w1, __m128 w2, const __m128 n[3], int kept) {
-        const size_t i = size_t(x - x0);
+        const size_t i = size_t(base + x);
         _mm_storeu_ps(&l1[i], w1), _mm_storeu_ps(&l2[i], w2);
         _mm_storeu_ps(&nx[i], n[0]), _mm_storeu_ps(&ny[i], n[1]), _mm_storeu_ps(&nz[i], n[2]);
-        std::memset(&keep[i], 1, size_t(kept));
+        const uint32_t lanes = uint32_t((uint64_t(1) << (8 * kept)) - 1) & 0x01010101u;
+        std::memcpy(&keep[i], &lanes, 4);
     }
 #endif
 };
-
 // A texel's state bit beside kTexelPainted (texel_dilation.h): its colour is the source's.
 constexpr uint8_t kTexelFromSource = 2;
 
-// The kept texels of `row` solved: states[x] = kTexelPainted, | kTexelFromSource where solved,
-// rgba[x] = the colour where solved; the others left. states and rgba point at the row's x = 0.
-void writeTexelRow(const TargetFrame &frame, const TexelRow &row, uint8_t *states, uint32_t *rgba);
+// The kept texels of `batch` solved (8 lanes at once where the CPU has AVX2, else 4 with SSE2,
+// else one by one: the same colours bit for bit) and written: states[x] = kTexelPainted,
+// | kTexelFromSource where solved, rgba[x] = the colour where solved; the others left (each row
+// at its offsets in states and rgba).
+void writeTexelBatch(const TargetFrame &frame, TexelBatch &batch, uint8_t *states, uint32_t *rgba);
 
 }  // namespace voxelfair
