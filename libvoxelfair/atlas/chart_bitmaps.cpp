@@ -6,8 +6,8 @@
 
 namespace voxelfair {
 
-void rasterizeChartBitmaps(const AtlasCharts &charts, const ChartMasks &fine, ChartMasks &coarse, int64_t leastBlocks,
-                           ChartBitmaps &out, int threads) {
+void rasterizeChartBitmaps(const AtlasCharts &charts, ChartMasks &coarse, int64_t leastBlocks, ChartBitmaps &out,
+                           int threads) {
     out.first.assign(charts.chartCount(), ChartBitmaps::kNone);
     out.setBlocks.assign(charts.chartCount(), 0);
     out.bits.clear();
@@ -16,33 +16,26 @@ void rasterizeChartBitmaps(const AtlasCharts &charts, const ChartMasks &fine, Ch
     size_t total = 0;
     for (size_t c = 0; c < charts.chartCount(); ++c) {
         const ChartMask &m = coarse.charts[c];
-        if (int64_t(m.width) * m.height < leastBlocks || fine.spanFirst.size() != charts.chartCount() + 1 ||
-            fine.spanFirst[c] == fine.spanFirst[c + 1])
+        if (int64_t(m.width) * m.height < leastBlocks || coarse.spanFirst.size() != charts.chartCount() + 1 ||
+            coarse.spanFirst[c] == coarse.spanFirst[c + 1])
             continue;
         chosen.push_back(uint32_t(c));
         out.first[c] = total;
         total += size_t(m.width) * size_t(m.height);
     }
     out.bits.assign(total, 0);
-    const int pad = fine.padding;
     std::vector<size_t> spansOf(chosen.size(), 0);  // blocks in the coarse mask's row spans
     const size_t bands = std::min<size_t>(chosen.size(), 64);
     // Small work stays on one thread: starting threads would cost more.
     runBands(bands, total >= (size_t(1) << 15) ? bandThreads(threads, bands) : 1, [&](size_t band) {
         for (size_t k = band; k < chosen.size(); k += bands) {
             const size_t c = chosen[k];
-            const ChartMask &f = fine.charts[c], &m = coarse.charts[c];
-            // Straight onto the blocks: the padding's square dilation of a texel span is the span
-            // widened by the padding over the rows around it, and a block is set when any texel of
-            // it is, so each span sets a run of blocks on one or two block rows.
-            const int w = f.width, h = f.height;
+            const ChartMask &m = coarse.charts[c];
+            // The block spans, padding included (rasterizeChartMasks on blocks).
             uint8_t *bits = out.bits.data() + out.first[c];
-            for (size_t i = fine.spanFirst[c]; i < fine.spanFirst[c + 1]; i += 3) {
-                const int y = fine.spans[i], xl = fine.spans[i + 1], xr = fine.spans[i + 2];
-                const int x0 = std::max(0, xl - pad) / 2, x1 = std::min(w - 1, xr + pad) / 2;
-                const int y1 = std::min(h - 1, y + pad) / 2;
-                for (int by = std::max(0, y - pad) / 2; by <= y1; ++by)
-                    std::fill(bits + size_t(by) * m.width + x0, bits + size_t(by) * m.width + x1 + 1, uint8_t(1));
+            for (size_t i = coarse.spanFirst[c]; i < coarse.spanFirst[c + 1]; i += 3) {
+                uint8_t *row = bits + size_t(coarse.spans[i]) * size_t(m.width);
+                std::fill(row + coarse.spans[i + 1], row + coarse.spans[i + 2] + 1, uint8_t(1));
             }
             // The room the packer will take: the bitmap's blocks, not the rows' spans.
             const int16_t *l = m.rowLeft(coarse.profiles), *r = m.rowRight(coarse.profiles);

@@ -5,9 +5,9 @@
 // This is the per-row free-interval packing of Levy et al. 2002's "Tetris" packer and of
 // xatlas's bitmap packer, kept to the charts large enough to gain from it.
 //
-// A bitmap is the chart's conservative texels (as rasterizeChartMasks), grown by the masks'
-// padding (square, Chebyshev), coarsened to blocks: exactly the blocks of the coarse mask that
-// the chart or its padding touch. Its row extents are the coarse mask's profiles.
+// A bitmap is the chart's block mask (rasterizeChartMasks on blocks: its conservative texels
+// grown by the padding, coarsened to blocks) set block by block from the mask's spans. Its row
+// extents are the mask's profiles.
 #pragma once
 
 #include "atlas/chart_masks.h"
@@ -31,11 +31,11 @@ struct ChartBitmaps {
     const uint8_t *of(size_t chart) const { return bits.data() + first[chart]; }
 };
 
-// Builds bitmaps of the charts whose coarse mask covers at least `leastBlocks` blocks, from the
-// fine masks (texels, rasterised with keepSpans: their spans and padding) and their coarse masks (blocks), and
-// lowers coarse.totalRowTexels to the blocks the bitmaps' row spans hold.
+// Builds bitmaps of the charts whose block mask covers at least `leastBlocks` blocks, from the
+// block masks (rasterised on blocks with keepSpans), and lowers coarse.totalRowTexels to the
+// blocks the bitmaps' row spans hold.
 // On up to `threads` threads (0: one per hardware thread); the same bitmaps for any count.
-void rasterizeChartBitmaps(const AtlasCharts &charts, const ChartMasks &fine, ChartMasks &coarse, int64_t leastBlocks,
-                           ChartBitmaps &out, int threads = 0);
+void rasterizeChartBitmaps(const AtlasCharts &charts, ChartMasks &coarse, int64_t leastBlocks, ChartBitmaps &out,
+                           int threads = 0);
 
 }  // namespace voxelfair

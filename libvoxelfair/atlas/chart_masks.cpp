@@ -42,10 +42,100 @@ struct MaskPart {
 // Fewer faces than this are rasterised on one thread: starting threads would cost more.
 constexpr size_t kLeastParallelFaces = 4096;
 
+// Chart c straight onto 2 x 2 blocks: the coarse mask that rasterising its texels (on the w x h
+// canvas, at `origin`), growing them by `padding` and coarsening would give. The texel mask's
+// box is the footprint's, known from the triangles' extents (each triangle's first and last
+// texel rows and columns hold its extreme corners), grown by padding; a block is set when a
+// texel of it lies within padding of a texel the triangle's grown square meets, i.e. when the
+// triangle meets the block grown by padding + kMaskMargin texels: a conservative test on the
+// block grid with that margin in blocks. Its three half-plane tests may keep a block near a
+// sharp corner that the texel mask leaves out (a superset: still never overlapped by the bake).
+bool rasterizeBlocks(const AtlasCharts &charts, size_t c, double origin, int w, int h, int padding, int maxSide,
+                     bool keepSpans, ChartMask &m, MaskPart &part, size_t &spanCount, std::vector<int> &rowLeft,
+                     std::vector<int> &rowRight, std::vector<int> &colBottom, std::vector<int> &colTop) {
+    double lx = INFINITY, hx = -INFINITY, ly = INFINITY, hy = -INFINITY;
+    for (size_t i = charts.chartFirstFace[c]; i < charts.chartFirstFace[c + 1]; ++i) {
+        const glm::vec2 *uv = &charts.wedgeUv[3 * i];
+        const glm::dvec2 a = glm::dvec2(uv[0]) * m.scale + origin, b = glm::dvec2(uv[1]) * m.scale + origin,
+                         d = glm::dvec2(uv[2]) * m.scale + origin;
+        const double area = doubleArea(a, b, d);
+        if (!(area != 0) || !std::isfinite(area))
+            continue;  // not rasterised (texel_raster.h)
+        lx = std::min({lx, a.x, b.x, d.x}), hx = std::max({hx, a.x, b.x, d.x});
+        ly = std::min({ly, a.y, b.y, d.y}), hy = std::max({hy, a.y, b.y, d.y});
+    }
+    int bx0 = padding + 1, bx1 = bx0, by0 = bx0, by1 = bx0;  // nothing with area: keep one texel
+    if (lx <= hx) {
+        bx0 = clampToInt(std::ceil(lx - 1 - kMaskMargin), 0, w);
+        bx1 = clampToInt(std::floor(hx + kMaskMargin), -1, w - 1);
+        by0 = clampToInt(std::ceil(ly - 1 - kMaskMargin), 0, h);
+        by1 = clampToInt(std::floor(hy + kMaskMargin), -1, h - 1);
+    }
+    const int x0 = bx0 - padding, y0 = by0 - padding;
+    const int texelWidth = bx1 + padding - x0 + 1, texelHeight = by1 + padding - y0 + 1;
+    if (texelWidth > maxSide || texelHeight > maxSide)
+        return false;
+    m.offset = glm::dvec2(origin - x0, origin - y0);
+    m.width = (texelWidth + 1) / 2;
+    m.height = (texelHeight + 1) / 2;
+    rowLeft.assign(size_t(m.height), kNone);
+    rowRight.assign(size_t(m.height), -kNone);
+    colBottom.assign(size_t(m.width), kNone);
+    colTop.assign(size_t(m.width), -kNone);
+    const double margin = (padding + kMaskMargin) / 2;
+    bool any = false;
+    for (size_t i = charts.chartFirstFace[c]; i < charts.chartFirstFace[c + 1]; ++i) {
+        const glm::vec2 *uv = &charts.wedgeUv[3 * i];
+        rasterConservativeSpans(
+            (glm::dvec2(uv[0]) * m.scale + m.offset) * 0.5, (glm::dvec2(uv[1]) * m.scale + m.offset) * 0.5,
+            (glm::dvec2(uv[2]) * m.scale + m.offset) * 0.5, margin, m.width, m.height, [&](int y, int xl, int xr) {
+                any = true;
+                if (keepSpans) {
+                    if (spanCount + 3 > part.spans.size())
+                        part.spans.resize(2 * part.spans.size() + 3);
+                    int16_t *at = part.spans.data() + spanCount;
+                    at[0] = int16_t(y), at[1] = int16_t(xl), at[2] = int16_t(xr);
+                    spanCount += 3;
+                }
+                rowLeft[size_t(y)] = std::min(rowLeft[size_t(y)], xl);
+                rowRight[size_t(y)] = std::max(rowRight[size_t(y)], xr);
+                int *bottom = colBottom.data(), *top = colTop.data();
+                for (int x = xl; x <= xr; ++x) {
+                    bottom[x] = std::min(bottom[x], y);
+                    top[x] = std::max(top[x], y);
+                }
+            });
+    }
+    if (!any) {  // the one texel and its padding: the whole mask
+        std::fill(rowLeft.begin(), rowLeft.end(), 0);
+        std::fill(rowRight.begin(), rowRight.end(), m.width - 1);
+        std::fill(colBottom.begin(), colBottom.end(), 0);
+        std::fill(colTop.begin(), colTop.end(), m.height - 1);
+    }
+    if (keepSpans)
+        part.spanEnd.push_back(spanCount);
+    m.profile = part.profiles.size();
+    part.profiles.resize(m.profile + 2 * size_t(m.width) + 2 * size_t(m.height));
+    int16_t *bottom = part.profiles.data() + m.profile, *top = bottom + m.width;
+    int16_t *left = top + m.width, *right = left + m.height;
+    for (int y = 0; y < m.height; ++y) {
+        const bool set = rowLeft[size_t(y)] != kNone;
+        left[y] = int16_t(set ? rowLeft[size_t(y)] : m.width);
+        right[y] = int16_t(set ? rowRight[size_t(y)] : -1);
+        part.totalRowTexels += set ? size_t(right[y] - left[y] + 1) : 0;
+    }
+    for (int x = 0; x < m.width; ++x) {
+        const bool set = colBottom[size_t(x)] != kNone;
+        bottom[x] = int16_t(set ? colBottom[size_t(x)] : m.height);
+        top[x] = int16_t(set ? colTop[size_t(x)] : -1);
+    }
+    return true;
+}
+
 // Charts [first, end) into `part` (profiles and spans counted from its own start) and
 // masks[first, end): false as soon as one is too large.
 bool rasterizeRange(const AtlasCharts &charts, size_t first, size_t end, double texelsPerUnit, int padding, int maxSide,
-                    bool keepSpans, ChartMask *masks, MaskPart &part) {
+                    bool keepSpans, bool onBlocks, ChartMask *masks, MaskPart &part) {
     // The footprint's extent per row (leftmost, rightmost column) and per column (lowest,
     // highest row) in the chart's canvas; kNone where nothing is set. Only these extents reach
     // the packers, so the footprint itself is never stored: the square dilation by `padding`
@@ -62,7 +152,9 @@ bool rasterizeRange(const AtlasCharts &charts, size_t first, size_t end, double 
             const double scale = charts.isDegenerate(c) ? 1.0 : texelsPerUnit;
             for (size_t i = charts.chartFirstFace[c]; i < charts.chartFirstFace[c + 1]; ++i) {
                 const glm::vec2 *uv = &charts.wedgeUv[3 * i];
-                rows += (std::max({uv[0].y, uv[1].y, uv[2].y}) - std::min({uv[0].y, uv[1].y, uv[2].y})) * scale + 3;
+                rows += (std::max({uv[0].y, uv[1].y, uv[2].y}) - std::min({uv[0].y, uv[1].y, uv[2].y})) * scale *
+                            (onBlocks ? 0.5 : 1.0) +
+                        3;
             }
         }
         if (rows < 1e9)
@@ -75,6 +167,12 @@ bool rasterizeRange(const AtlasCharts &charts, size_t first, size_t end, double 
         if (!(size.x < maxSide && size.y < maxSide))
             return false;
         const int w = int(std::ceil(size.x)) + 2 * border + 1, h = int(std::ceil(size.y)) + 2 * border + 1;
+        if (onBlocks) {
+            if (!rasterizeBlocks(charts, c, origin, w, h, padding, maxSide, keepSpans, m, part, spanCount, rowLeft,
+                                 rowRight, colBottom, colTop))
+                return false;
+            continue;
+        }
         rowLeft.assign(size_t(h), kNone);
         rowRight.assign(size_t(h), -kNone);
         colBottom.assign(size_t(w), kNone);
@@ -162,7 +260,7 @@ bool rasterizeRange(const AtlasCharts &charts, size_t first, size_t end, double 
 }  // namespace
 
 bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int padding, int maxSide, ChartMasks &masks,
-                         bool keepSpans, int threads) {
+                         bool keepSpans, int threads, bool onBlocks) {
     masks.spans.clear();
     masks.spanFirst.assign(keepSpans ? 1 : 0, 0);
     masks.charts.assign(charts.chartCount(), ChartMask{});
@@ -186,7 +284,7 @@ bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int pa
     std::vector<MaskPart> parts(bands);
     std::vector<uint8_t> fits(bands, 0);
     runBands(bands, workers, [&](size_t b) {
-        fits[b] = rasterizeRange(charts, from[b], from[b + 1], texelsPerUnit, padding, maxSide, keepSpans,
+        fits[b] = rasterizeRange(charts, from[b], from[b + 1], texelsPerUnit, padding, maxSide, keepSpans, onBlocks,
                                  masks.charts.data(), parts[b]);
     });
     for (size_t b = 0; b < bands; ++b) {
@@ -208,49 +306,6 @@ bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int pa
         }
     }
     return true;
-}
-
-void coarsenChartMasks(const ChartMasks &fine, ChartMasks &coarse) {
-    coarse.charts.resize(fine.charts.size());
-    coarse.profiles.clear();
-    coarse.texelsPerUnit = fine.texelsPerUnit;
-    coarse.padding = fine.padding;
-    coarse.totalRowTexels = 0;
-    // Per line pair: the lower of the two lows and the higher of the two highs, halved; an
-    // empty line (low past its high) leaves the other's extent.
-    auto pairs = [](const int16_t *lo, const int16_t *hi, int count, int16_t *outLo, int16_t *outHi) {
-        int64_t blocks = 0;
-        for (int k = 0; 2 * k < count; ++k) {
-            int l = INT16_MAX, h = -1;
-            for (int j = 2 * k; j < std::min(count, 2 * k + 2); ++j)
-                if (lo[j] <= hi[j])
-                    l = std::min<int>(l, lo[j]), h = std::max<int>(h, hi[j]);
-            outLo[k] = int16_t(h < 0 ? INT16_MAX : l / 2);
-            outHi[k] = int16_t(h < 0 ? -1 : h / 2);
-            blocks += h < 0 ? 0 : outHi[k] - outLo[k] + 1;
-        }
-        return blocks;
-    };
-    for (size_t c = 0; c < fine.charts.size(); ++c) {
-        const ChartMask &f = fine.charts[c];
-        ChartMask &m = coarse.charts[c];
-        m = f;
-        m.width = (f.width + 1) / 2;
-        m.height = (f.height + 1) / 2;
-        m.profile = coarse.profiles.size();
-        coarse.profiles.resize(m.profile + 2 * size_t(m.width) + 2 * size_t(m.height));
-        int16_t *bottom = coarse.profiles.data() + m.profile, *top = bottom + m.width;
-        int16_t *left = top + m.width, *right = left + m.height;
-        coarse.totalRowTexels +=
-            size_t(pairs(f.rowLeft(fine.profiles), f.rowRight(fine.profiles), f.height, left, right));
-        pairs(f.colBottom(fine.profiles), f.colTop(fine.profiles), f.width, bottom, top);
-        for (int k = 0; k < m.height; ++k)  // empty rows as rasterizeChartMasks leaves them
-            if (right[k] < 0)
-                left[k] = int16_t(m.width);
-        for (int k = 0; k < m.width; ++k)
-            if (top[k] < 0)
-                bottom[k] = int16_t(m.height);
-    }
 }
 
 }  // namespace voxelfair

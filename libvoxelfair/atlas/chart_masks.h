@@ -42,8 +42,9 @@ struct ChartMasks {
     // Texels between the leftmost and rightmost set texel of every row of every mask: no
     // packing of the masks takes less room (the tight packer takes these spans or more).
     size_t totalRowTexels = 0;
-    // With keepSpans: every chart's conservative texel spans (row, first, last), in mask texels,
-    // chart c's from spanFirst[c] to spanFirst[c + 1] (chart_bitmaps.h reads them).
+    // With keepSpans: every chart's conservative texel spans (row, first, last), in mask texels
+    // (on blocks: its blocks' spans, padding included), chart c's from spanFirst[c] to
+    // spanFirst[c + 1] (chart_bitmaps.h reads them).
     std::vector<int16_t> spans;
     std::vector<size_t> spanFirst;
 };
@@ -58,14 +59,13 @@ struct ChartPlacement {
 // Rasterises every chart at `texelsPerUnit`. Returns false (and leaves `masks` partial) as soon
 // as a mask would be wider or taller than maxSide, which bounds the work for absurd densities.
 // On up to `threads` threads (0: one per hardware thread); the masks are the same for any count.
+// onBlocks: the masks on a grid of 2 x 2 texel blocks (PackOptions::mipBlocks), rasterised there
+// directly: a block is set when any texel of the texel mask is (or, rarely, near a sharp corner,
+// one more), so masks placed without overlap at even texels share no block. Sizes, profiles,
+// spans and totalRowTexels are then in blocks; scale and offset still map chart points to the
+// texel mask's texels, whose size is twice the block mask's (rounded up to even).
 bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int padding, int maxSide, ChartMasks &masks,
-                         bool keepSpans = false, int threads = 0);
-
-// The masks on a grid of 2 x 2 texel blocks (PackOptions::mipBlocks): a block is set when any
-// of its texels is, so masks placed without overlap at even texels share no block. Mask sizes
-// in blocks; scale and offset still map chart points to the fine mask's texels, whose size is
-// twice the coarse one (rounded up to even). totalRowTexels counts blocks.
-void coarsenChartMasks(const ChartMasks &fine, ChartMasks &coarse);
+                         bool keepSpans = false, int threads = 0, bool onBlocks = false);
 
 // The mask-local texel position of chart point `p` (scaled and offset already) after `quarterTurns`
 // counter-clockwise turns of the width x height mask; integer texels map to integer texels.

@@ -21,7 +21,7 @@ constexpr int kMaxSide = 16384;  // the packers keep texel rows and columns in i
 // their shape, not their box: on legs 64 -> 16 halves the texture (2048^2 -> 2048 x 1024).
 constexpr int64_t kLeastBitmapBlocks = 16;
 
-// Masks in texels and, with mipBlocks, on 2 x 2 blocks (what the packer then sees); placements
+// Masks in texels or, with mipBlocks, on 2 x 2 blocks (what the packer then sees); placements
 // in texels either way.
 struct Packing {
     int block = 1;
@@ -32,12 +32,11 @@ struct Packing {
 };
 
 bool rasterize(const AtlasCharts &charts, double density, int padding, int maxSide, int threads, Packing &out) {
-    if (!rasterizeChartMasks(charts, density, padding, maxSide, out.masks, out.block > 1, threads))
+    if (out.block == 1)
+        return rasterizeChartMasks(charts, density, padding, maxSide, out.masks, false, threads);
+    if (!rasterizeChartMasks(charts, density, padding, maxSide, out.blocks, true, threads, true))
         return false;
-    if (out.block > 1) {
-        coarsenChartMasks(out.masks, out.blocks);
-        rasterizeChartBitmaps(charts, out.masks, out.blocks, kLeastBitmapBlocks, out.bitmaps, threads);
-    }
+    rasterizeChartBitmaps(charts, out.blocks, kLeastBitmapBlocks, out.bitmaps, threads);
     return true;
 }
 
@@ -360,9 +359,9 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
     out.wedgeUv.resize(charts.wedgeUv.size());
     const glm::dvec2 extent(out.width, out.height);
     for (size_t c = 0; c < charts.chartCount(); ++c) {
-        const ChartMask &m = packing.masks.charts[c];
+        const ChartMask &m = packing.packed().charts[c];
         const int b = packing.block;  // the packed mask's size in texels: even with blocks
-        const int maskWidth = b * packing.packed().charts[c].width, maskHeight = b * packing.packed().charts[c].height;
+        const int maskWidth = b * m.width, maskHeight = b * m.height;
         const ChartPlacement &p = packing.placements[c];
         for (uint32_t i = charts.chartFirstFace[c]; i < charts.chartFirstFace[c + 1]; ++i) {
             const uint32_t f = charts.chartFaces[i];
