@@ -1,9 +1,17 @@
 #include "atlas/pack_tight.h"
 
+#include "base/parallel_bands.h"
+
 #include <algorithm>
+#include <atomic>
+#include <condition_variable>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <mutex>
 #include <numeric>
+#include <optional>
+#include <thread>
 #include <tuple>
 #include <unordered_map>
 
@@ -120,6 +128,14 @@ public:
         return row;
     }
 
+    // The same without noting the answer (safe beside other readers).
+    int firstRowFrom(int length) const {
+        int row = firstRow_[size_t(length)];
+        while (row < height_ && widest_[size_t(row)] < length)
+            ++row;
+        return row;
+    }
+
     // The first x >= from in row y starting a free run of at least `length`, or -1.
     int nextRun(int y, int from, int length) const {
         const int16_t *r = &run_[size_t(y) * side_];
@@ -168,11 +184,12 @@ private:
 };
 
 // The lowest, then leftmost, free place for `shape` in a width x height atlas from row y, column x
-// on, with its top below `topLimit`. Returns true with (y, x) set; false with y at the first row
-// not searched.
-bool lowestFit(const FreeRuns &runs, const Shape &shape, int side, int height, int topLimit, int &y, int &x) {
+// on, with a top that `below(top)` accepts (true up to some row, then false). Returns true with
+// (y, x) set; false with y at the first row not searched.
+template <class Below>
+bool lowestFit(const FreeRuns &runs, const Shape &shape, int side, int height, Below &&below, int &y, int &x) {
     const Span &wr = shape.spans[0];
-    for (; y + shape.height <= height && y + shape.height < topLimit; ++y, x = 0) {
+    for (; y + shape.height <= height && below(y + shape.height); ++y, x = 0) {
         // Every span of the chart needs a long enough run somewhere in its atlas row.
         bool possible = true;
         for (const Span &sp : shape.spans)
@@ -206,10 +223,68 @@ bool lowestFit(const FreeRuns &runs, const Shape &shape, int side, int height, i
     return false;
 }
 
+// A second thread for packTight's large charts: share(count, search) calls search(t) for every t
+// in [0, count), each t taken by whichever of the caller and the helper comes first, so the
+// caller never waits for a helper that has not started, only for a search it is running.
+class TurnSharing {
+public:
+    TurnSharing() : helper_([this] { run(); }) {}
+    TurnSharing(const TurnSharing &) = delete;
+    TurnSharing &operator=(const TurnSharing &) = delete;
+    ~TurnSharing() {
+        {
+            const std::lock_guard<std::mutex> lock(mutex_);
+            stop_ = true;
+        }
+        wake_.notify_one();
+        helper_.join();
+    }
+
+    // `search` must not throw.
+    void share(int count, const std::function<void(int)> &search) {
+        std::unique_lock<std::mutex> lock(mutex_);
+        search_ = &search, next_ = 0, count_ = count;
+        lock.unlock();
+        wake_.notify_one();
+        for (lock.lock(); next_ < count_; lock.lock()) {
+            const int t = next_++;
+            lock.unlock();
+            search(t);
+        }
+        done_.wait(lock, [this] { return running_ == 0; });
+        search_ = nullptr, count_ = 0;
+    }
+
+private:
+    void run() {
+        std::unique_lock<std::mutex> lock(mutex_);
+        for (;;) {
+            wake_.wait(lock, [this] { return stop_ || next_ < count_; });
+            if (stop_)
+                return;
+            const int t = next_++;
+            const std::function<void(int)> *search = search_;
+            ++running_;
+            lock.unlock();
+            (*search)(t);
+            lock.lock();
+            if (--running_ == 0)
+                done_.notify_one();
+        }
+    }
+
+    std::mutex mutex_;
+    std::condition_variable wake_, done_;
+    const std::function<void(int)> *search_ = nullptr;
+    int next_ = 0, count_ = 0, running_ = 0;
+    bool stop_ = false;
+    std::thread helper_;  // last: started once the rest is ready
+};
+
 }  // namespace
 
 TightPacking packTight(const ChartMasks &masks, int side, int height, bool allowTurns,
-                       std::vector<ChartPlacement> &placements, const ChartBitmaps *bitmaps) {
+                       std::vector<ChartPlacement> &placements, const ChartBitmaps *bitmaps, int threads) {
     TightPacking result;
     const size_t charts = masks.charts.size();
     placements.assign(charts, ChartPlacement{});
@@ -256,12 +331,53 @@ TightPacking packTight(const ChartMasks &masks, int side, int height, bool allow
 
     FreeRuns runs(side, height);
     Shape shape, best;
+    // Large charts' turns (no cursor) searched side by side on two threads: each search gives up
+    // once its top, then its turn, can no longer beat the best found (key top * 4 + turn), so the
+    // turn kept is the first with the lowest top, as one after the other.
+    std::optional<TurnSharing> sharing;
+    Shape turned[4];
+    struct TurnFit {
+        bool found = false;
+        int y = 0, x = 0;
+    } fits[4];
+    std::atomic<int64_t> bestKey{INT64_MAX};
     for (uint32_t c : order) {
         const bool box = boxed(c), small = area(c) < shapedArea;
+        const uint8_t *bits = bitmaps && bitmaps->has(c) ? bitmaps->of(c) : nullptr;
         int bestTop = INT32_MAX;
-        for (int turns = 0; turns < (allowTurns ? (box ? 2 : 4) : 1); ++turns) {
-            turnedShape(masks.charts[c], masks.profiles, turns, box,
-                        bitmaps && bitmaps->has(c) ? bitmaps->of(c) : nullptr, shape);
+        const bool shared = !small && allowTurns && bandThreads(threads, 2) > 1;
+        if (shared) {
+            if (!sharing)
+                sharing.emplace();
+            bestKey = INT64_MAX;
+            const std::function<void(int)> search = [&](int t) {
+                fits[t].found = false;
+                Shape &sh = turned[t];
+                turnedShape(masks.charts[c], masks.profiles, t, false, bits, sh);
+                if (sh.width > side || sh.height > height)
+                    return;
+                int y = std::max(0, runs.firstRowFrom(sh.spans[0].length) - sh.spans[0].row), x = 0;
+                auto below = [&](int top) { return int64_t(top) * 4 + t < bestKey.load(std::memory_order_relaxed); };
+                if (!lowestFit(runs, sh, side, height, below, y, x))
+                    return;
+                fits[t] = {true, y, x};
+                const int64_t key = int64_t(y + sh.height) * 4 + t;
+                int64_t seen = bestKey.load();
+                while (key < seen && !bestKey.compare_exchange_weak(seen, key)) {
+                }
+            };
+            sharing->share(4, search);
+            int chosen = -1;
+            for (int t = 0; t < 4; ++t)
+                if (fits[t].found && (chosen < 0 || fits[t].y + turned[t].height < bestTop))
+                    chosen = t, bestTop = fits[t].y + turned[t].height;
+            if (chosen >= 0) {
+                placements[c] = {fits[chosen].x, fits[chosen].y, chosen};
+                std::swap(best, turned[chosen]);
+            }
+        }
+        for (int turns = 0; turns < (allowTurns ? (box ? 2 : 4) : 1) && !shared; ++turns) {
+            turnedShape(masks.charts[c], masks.profiles, turns, box, bits, shape);
             if (shape.width > side || shape.height > height)
                 continue;
             int y = std::max(0, runs.firstRow(shape.spans[0].length) - shape.spans[0].row), x = 0;
@@ -273,7 +389,8 @@ TightPacking packTight(const ChartMasks &masks, int side, int height, bool allow
                 if (cursor->first >= y)
                     std::tie(y, x) = *cursor;
             }
-            const bool found = lowestFit(runs, shape, side, height, bestTop, y, x);
+            const bool found = lowestFit(
+                runs, shape, side, height, [bestTop](int top) { return top < bestTop; }, y, x);
             if (cursor)  // nothing of this size fits before here, now or later
                 *cursor = {y, found ? x : 0};
             if (found) {

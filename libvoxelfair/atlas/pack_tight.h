@@ -38,8 +38,10 @@ inline bool packedAsBox(int64_t maskArea, int side, int height, bool hasBitmap) 
 }
 
 // Packs into a side x height rectangle, side the width (both <= 16383). Charts with a bitmap
-// leave the holes inside their rows free.
+// leave the holes inside their rows free. With threads > 1 (0: one per hardware thread) the
+// turns of the charts of at least 1/1024 of the rectangle are searched on two threads: the same
+// placements for any count.
 TightPacking packTight(const ChartMasks &masks, int side, int height, bool allowTurns,
-                       std::vector<ChartPlacement> &placements, const ChartBitmaps *bitmaps = nullptr);
+                       std::vector<ChartPlacement> &placements, const ChartBitmaps *bitmaps = nullptr, int threads = 1);
 
 }  // namespace voxelfair

@@ -52,14 +52,14 @@ struct Fit {
 };
 
 // Places already rasterised masks in a side x height rectangle (the paper packer: a square).
-Fit place(Packing &packing, PackMode mode, int side, int height, bool turns) {
+Fit place(Packing &packing, PackMode mode, int side, int height, bool turns, int threads) {
     const ChartMasks &masks = packing.packed();
     std::vector<ChartPlacement> &placements = packing.placements;
     if (mode == PackMode::Tight) {
         const int b = packing.block, units = side / b, rows = height / b;  // in blocks
         const double square = double(units) * rows;
         const TightPacking t =
-            packTight(masks, units, rows, turns, placements, packing.block > 1 ? &packing.bitmaps : nullptr);
+            packTight(masks, units, rows, turns, placements, packing.block > 1 ? &packing.bitmaps : nullptr, threads);
         for (ChartPlacement &p : placements)
             p.x *= b, p.y *= b;
         return {t.fits, 0, double(t.room) / square, double(t.placedRoom) / square, double(t.top) / rows};
@@ -79,7 +79,7 @@ Fit attempt(const AtlasCharts &charts, const PackOptions &o, double density, int
     ++attempts;
     if (!rasterize(charts, density, padding, side, o.threads, out))
         return {};  // a chart alone is wider than the texture
-    return place(out, o.mode, side, height, o.allowRotation);
+    return place(out, o.mode, side, height, o.allowRotation, o.threads);
 }
 
 // The largest density (within 0.5%, below `ceiling`) whose packing fits a side x height
@@ -302,7 +302,8 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
                 height = side / 2;
             for (out.size = side; out.size <= maxSide; nextShape(wide, out.size, height)) {
                 if (out.size >= longest && height >= longestShort) {
-                    const Fit f = place(packing, options.mode, out.size, height, options.allowRotation);
+                    const Fit f =
+                        place(packing, options.mode, out.size, height, options.allowRotation, options.threads);
                     if (f.fits) {
                         fits = true;
                         filled = f.filled;

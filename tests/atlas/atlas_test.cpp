@@ -653,7 +653,7 @@ TEST(Packing, IsDeterministic) {
     EXPECT_EQ(packCharts(charts).wedgeUv, packCharts(charts).wedgeUv);
 }
 
-// Masks, bitmaps and the bake run on threads in bands; the result must not depend on how many.
+// Masks, bitmaps, the large charts' turns and the bake run on threads; the result must not depend on how many.
 TEST(Packing, ThreadCountChangesNothing) {
     const TestMesh mesh = smoothed(voxelSphere(20));  // ~10k faces: above the parallel thresholds
     ASSERT_GE(mesh.faceCount(), 4096u);
