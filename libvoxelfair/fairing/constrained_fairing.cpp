@@ -32,7 +32,7 @@ void run(constrained::FairingState<kQuads> &s) {
     buildCorners(s);
     std::fill(s.edgeFlags, s.edgeFlags + s.cornerCount, uint8_t(0));
     classifyEdges(s.k, s.twin, s.input, s.normal, s.options, s.V, s.creases, s.creaseCount, s.edgeFlags,
-                  s.sharpBoundary, s.sharpCreases, s.notches, s.report);
+                  s.sharpBoundary, s.sharpCreases, s.notches, s.report, s.threads);
     findVertexKinds(s);
     buildLevels(s);
     buildSlots(s);
@@ -67,7 +67,7 @@ ConstrainedFairingReport fairConstrained(const MutablePolygonMesh &mesh, const u
     ConstrainedFairingReport report;
     if (options.passes < 0 || options.normalLevels < 0 || options.normalLevels > 8 || options.positionSweeps < 0 ||
         options.stepReach < 1 || options.featureReach < 0 || options.cornerFlats < 0 || options.driftRounds < 0 ||
-        options.driftWideRounds < 0 || options.featureFitIterations < 0 ||
+        options.driftWideRounds < 0 || options.featureFitIterations < 0 || options.threads < 0 ||
         !(options.featureSpreadDegrees >= 0.0f && options.featureSpreadDegrees < 180.0f) ||
         !(options.featureFlatDegrees >= 0.0f && options.featureFlatDegrees < 90.0f) ||
         !(options.cellHalfWidth > 0.0f) || !std::isfinite(options.cellHalfWidth) ||
@@ -75,7 +75,7 @@ ConstrainedFairingReport fairConstrained(const MutablePolygonMesh &mesh, const u
         !std::isfinite(options.voxelSize) || options.voxelSize < 0.0f)
         throw OptionError(
             "constrained fairing: passes, positionSweeps, driftRounds, driftWideRounds >= 0, normalLevels in [0, 8], "
-            "featureFitIterations >= 0, featureSpread in [0, 180), featureFlat in [0, 90), stepReach >= "
+            "featureFitIterations >= 0, threads >= 0, featureSpread in [0, 180), featureFlat in [0, 90), stepReach >= "
             "1, featureReach >= 0, cornerFlats >= 0, "
             "cellHalfWidth > 0, creaseAngle in (0, 180), voxelSize "
             "finite and >= 0");

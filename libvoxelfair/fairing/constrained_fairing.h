@@ -114,6 +114,10 @@ struct ConstrainedFairingOptions {
     int cornerFlats = 5;
     // Size of a voxel in the positions' units. 0 = detectVoxelSize().
     float voxelSize = 0.0f;
+    // Threads for the stages whose results do not depend on the order of the work (classification,
+    // normal filtering, the fit's set-up, step 5's rounds): the same output for any count. 0: one
+    // per hardware thread; meshes under 16,384 vertices a thread use fewer.
+    int threads = 0;
 };
 
 struct ConstrainedFairingReport {

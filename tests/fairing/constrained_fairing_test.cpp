@@ -275,3 +275,50 @@ TEST(FairingConstrained, NothingToDo) {
         p = glm::vec3(1.0f);
     EXPECT_EQ(fair(box).status, FairingStatus::NothingToDo);
 }
+
+TEST(FairingConstrained, TheSameOutputOnAnyThreadCount) {
+    // A ball, a box turned 8.2 degrees about y (notch edges) and a tilted rod side by side: over
+    // 49,152 vertices, so 3 threads are used (constrained_fairing.h: 16,384 a thread at most).
+    const float turn = 8.2f * 3.14159265f / 180.0f, c = std::cos(turn), s = std::sin(turn);
+    const QuadMesh quads = voxelSurface(150, 92, 92, [&](int x, int y, int z) {
+        const glm::vec3 p = glm::vec3(x, y, z) + 0.5f;
+        const glm::vec3 b = p - glm::vec3(108.3f, 46.1f, 45.7f);
+        const glm::vec3 r(c * b.x + s * b.z, b.y, -s * b.x + c * b.z);
+        const glm::vec3 a = glm::normalize(glm::vec3(1.0f, 2.0f, 3.0f)), q = p - glm::vec3(44.2f, 45.3f, 45.9f);
+        const float along = glm::dot(q, a);
+        return glm::length(p - glm::vec3(44.31f, 45.17f, 45.43f)) < 41.3f ||
+               (std::abs(r.x) < 24.0f && std::abs(r.y) < 33.0f && std::abs(r.z) < 28.0f) ||
+               (std::abs(along) < 44.0f && glm::length(q - along * a) < 4.6f);
+    });
+    ASSERT_GE(quads.positions.size(), 3u * 16384u);
+    QuadMesh triangles = quads;  // the general path: the first quad as two triangles
+    const uint32_t *corner = &quads.indices[0];
+    triangles.indices.insert(triangles.indices.begin() + 4, {corner[0], corner[2]});
+    triangles.indices[2] = corner[2];  // (corner[0], corner[1], corner[2]), (corner[0], corner[2], corner[3])
+    triangles.offsets.assign(1, 0);
+    triangles.offsets.push_back(3);
+    for (uint32_t end = 6; end <= triangles.indices.size(); end += 4)
+        triangles.offsets.push_back(end);
+    for (const QuadMesh *mesh : {&quads, static_cast<const QuadMesh *>(&triangles)})
+        for (const bool fitPlanes : {false, true}) {
+            std::vector<glm::vec3> first;
+            for (const int threads : {1, 2, 3}) {
+                ConstrainedFairingOptions o;
+                o.threads = threads;
+                o.fitPlanes = fitPlanes;
+                QuadMesh faired = *mesh;
+                const ConstrainedFairingReport r =
+                    fairConstrained({faired.positions.data(), faired.positions.size(), faired.offsets.data(),
+                                     faired.indices.data(), faired.offsets.size() - 1},
+                                    nullptr, o);
+                ASSERT_EQ(r.status, FairingStatus::Ok) << r.message;
+                EXPECT_GT(r.movedVertices, faired.positions.size() / 2);
+                if (threads == 1)
+                    first = faired.positions;
+                else  // bit for bit
+                    EXPECT_TRUE(faired.positions == first)
+                        << threads << " threads, " << (mesh == &quads ? "quads" : "triangles") << ", fitPlanes "
+                        << fitPlanes;
+            }
+        }
+}

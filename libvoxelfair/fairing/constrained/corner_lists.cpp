@@ -57,92 +57,108 @@ VOXELFAIR_NOINLINE void buildCorners(FairingState<kQuads> &s) {
 
     // Twins: a -> b and the one edge b -> a, when no other polygon has either direction. Both
     // directions show at a: a -> b as a corner at a whose next vertex is b, b -> a as a corner at a
-    // whose previous vertex is b; so a's own list decides.
+    // whose previous vertex is b; so a's own list decides. Tile by tile (the waves do not cross
+    // tiles), the tiles split between the threads, each listing its creases and corners without
+    // twin, joined in tile order: the lists of one pass in vertex order.
     uint32_t *const twin = s.twin, *const wave = s.rank;
-    std::fill(twin, twin + cornerCount, kNone);
-    // On the way: the creases (listed without branching on the test, whose outcome follows no
-    // pattern) and the corners without twin.
     const glm::vec3 *const normal = s.normal;
     const float creaseCos = std::cos(s.options.creaseAngleDegrees * 3.14159265f / 180.0f);
-    uint32_t *const creases = s.creases;
-    size_t creaseCount = 0;
-    auto noTwin = [&](uint32_t c, bool edge) {
-        if (edge)
-            s.sharpBoundary.push_back(c);
-    };
-    auto foundTwin = [&](uint32_t c, uint32_t t) {
-        twin[c] = t;
-        creases[creaseCount] = c;
+    const size_t tiles = (V + kTileSize - 1) / kTileSize;
+    std::vector<std::vector<uint32_t>> creasesIn(tiles), boundaryIn(tiles);
+    std::fill(twin, twin + cornerCount, kNone);  // (a tile writes the twins of its vertices' corners)
+    s.threads.run(tiles, [&](size_t tile) {
+        const size_t tileStart = tile * kTileSize, tileEnd = std::min(V, tileStart + kTileSize);
+        std::fill(wave + tileStart, wave + tileEnd, 0u);
+        // On the way: the creases (listed without branching on the test, whose outcome follows no
+        // pattern) and the corners without twin.
+        std::vector<uint32_t> &boundary = boundaryIn[tile], &tileCreases = creasesIn[tile];
+        tileCreases.resize(start[tileEnd] - start[tileStart] + 1);
+        uint32_t *const creases = tileCreases.data();
+        size_t creaseCount = 0;
+        auto noTwin = [&](uint32_t c, bool edge) {
+            if (edge)
+                boundary.push_back(c);
+        };
+        auto foundTwin = [&](uint32_t c, uint32_t t) {
+            twin[c] = t;
+            creases[creaseCount] = c;
 #ifdef VOXELFAIR_SSE2
-        creaseCount += t > c && dot3(load3(normal[k.polygonOf(c)]), load3(normal[k.polygonOf(t)])) < creaseCos;
+            creaseCount += t > c && dot3(load3(normal[k.polygonOf(c)]), load3(normal[k.polygonOf(t)])) < creaseCos;
 #else
-        creaseCount += t > c && glm::dot(normal[k.polygonOf(c)], normal[k.polygonOf(t)]) < creaseCos;
+            creaseCount += t > c && glm::dot(normal[k.polygonOf(c)], normal[k.polygonOf(t)]) < creaseCos;
 #endif
-    };
-    std::fill(wave, wave + V, 0u);
-    for (size_t a = 0; a < V; ++a) {
-        const uint32_t first = start[a], count = start[a + 1] - first;
-        const size_t tileStart = a - a % kTileSize;
-        uint32_t w = 0;
-        // (Next vertices are enough: a free vertex has no sharp edge, so every edge a -> u has its
-        // twin u -> a, and only free vertices are ordered.)
-        for (uint32_t i = first; i < first + count; ++i) {
-            // Masked, not branched on: half the neighbours come before, in no pattern.
-            const uint32_t u = next[i], before = 0u - uint32_t(u < a && u >= tileStart);
-            w = std::max(w, (wave[u] + 1) & before);
-        }
-        wave[a] = w;
+        };
+        for (size_t a = tileStart; a < tileEnd; ++a) {
+            const uint32_t first = start[a], count = start[a + 1] - first;
+            uint32_t w = 0;
+            // (Next vertices are enough: a free vertex has no sharp edge, so every edge a -> u has its
+            // twin u -> a, and only free vertices are ordered.)
+            for (uint32_t i = first; i < first + count; ++i) {
+                // Masked, not branched on: half the neighbours come before, in no pattern (the
+                // others read a's own wave, 0 so far, not another tile's, which another thread writes).
+                const uint32_t u = next[i], before = uint32_t(u < a && u >= tileStart);
+                w = std::max(w, (wave[before != 0 ? u : a] + 1) & (0u - before));
+            }
+            wave[a] = w;
 #ifdef VOXELFAIR_SSE2
-        if (count <= 8) {
-            // 8 lanes compared at once: where the match is varies, a branch on it would mispredict
-            // for most corners. Lanes past `count` hold the next vertices'.
-            auto load = [](const uint32_t *x) { return _mm_loadu_si128(reinterpret_cast<const __m128i *>(x)); };
-            const __m128i next0 = load(next + first), next1 = load(next + first + 4),
-                          previous0 = load(previous + first), previous1 = load(previous + first + 4);
-            const unsigned lanes = (1u << count) - 1;
-            auto matches = [lanes](__m128i b, __m128i low, __m128i high) {
-                return (unsigned(_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(b, low)))) |
-                        unsigned(_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(b, high)))) << 4) &
-                       lanes;
-            };
-            for (uint32_t i = 0; i < count; ++i) {
-                const uint32_t b = next[first + i];
-                const __m128i bb = _mm_set1_epi32(int(b));
-                const unsigned out = matches(bb, next0, next1), in = matches(bb, previous0, previous1);
-                // Exactly one each way (out holds i at least).
-                const uint32_t c = corners[first + i];
-                if (b == a || (out & (out - 1)) != 0 || in == 0 || (in & (in - 1)) != 0) {
-                    noTwin(c, b != a);
-                    continue;
+            if (count <= 8) {
+                // 8 lanes compared at once: where the match is varies, a branch on it would mispredict
+                // for most corners. Lanes past `count` hold the next vertices'.
+                auto load = [](const uint32_t *x) { return _mm_loadu_si128(reinterpret_cast<const __m128i *>(x)); };
+                const __m128i next0 = load(next + first), next1 = load(next + first + 4),
+                              previous0 = load(previous + first), previous1 = load(previous + first + 4);
+                const unsigned lanes = (1u << count) - 1;
+                auto matches = [lanes](__m128i b, __m128i low, __m128i high) {
+                    return (unsigned(_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(b, low)))) |
+                            unsigned(_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(b, high)))) << 4) &
+                           lanes;
+                };
+                for (uint32_t i = 0; i < count; ++i) {
+                    const uint32_t b = next[first + i];
+                    const __m128i bb = _mm_set1_epi32(int(b));
+                    const unsigned out = matches(bb, next0, next1), in = matches(bb, previous0, previous1);
+                    // Exactly one each way (out holds i at least).
+                    const uint32_t c = corners[first + i];
+                    if (b == a || (out & (out - 1)) != 0 || in == 0 || (in & (in - 1)) != 0) {
+                        noTwin(c, b != a);
+                        continue;
+                    }
+                    const uint32_t back = kBitIndex[(in * 0x1Du) >> 5 & 7];  // in is a power of 2 below 256
+                    const uint32_t t = k.previousCorner(corners[first + back]);
+                    if (k.polygonOf(t) != k.polygonOf(c))
+                        foundTwin(c, t);
+                    else
+                        noTwin(c, true);
                 }
-                const uint32_t back = kBitIndex[(in * 0x1Du) >> 5 & 7];  // in is a power of 2 below 256
-                const uint32_t t = k.previousCorner(corners[first + back]);
-                if (k.polygonOf(t) != k.polygonOf(c))
+                continue;
+            }
+#endif
+            for (uint32_t i = first; i < first + count; ++i) {
+                const uint32_t b = next[i];
+                if (b == a)
+                    continue;  // no edge
+                uint32_t out = 0, in = 0, back = 0;
+                for (uint32_t j = first; j < first + count; ++j) {
+                    out += next[j] == b;
+                    if (previous[j] == b) {
+                        back = j;
+                        ++in;
+                    }
+                }
+                const uint32_t c = corners[i], t = k.previousCorner(corners[back]);
+                if (out == 1 && in == 1 && k.polygonOf(t) != k.polygonOf(c))
                     foundTwin(c, t);
                 else
                     noTwin(c, true);
             }
-            continue;
         }
-#endif
-        for (uint32_t i = first; i < first + count; ++i) {
-            const uint32_t b = next[i];
-            if (b == a)
-                continue;  // no edge
-            uint32_t out = 0, in = 0, back = 0;
-            for (uint32_t j = first; j < first + count; ++j) {
-                out += next[j] == b;
-                if (previous[j] == b) {
-                    back = j;
-                    ++in;
-                }
-            }
-            const uint32_t c = corners[i], t = k.previousCorner(corners[back]);
-            if (out == 1 && in == 1 && k.polygonOf(t) != k.polygonOf(c))
-                foundTwin(c, t);
-            else
-                noTwin(c, true);
-        }
+        tileCreases.resize(creaseCount);
+    });
+    size_t creaseCount = 0;
+    for (size_t tile = 0; tile < tiles; ++tile) {
+        std::copy(creasesIn[tile].begin(), creasesIn[tile].end(), s.creases + creaseCount);
+        creaseCount += creasesIn[tile].size();
+        s.sharpBoundary.insert(s.sharpBoundary.end(), boundaryIn[tile].begin(), boundaryIn[tile].end());
     }
     s.creaseCount = creaseCount;
 }

@@ -51,6 +51,7 @@ namespace {
 constexpr float kTurnDegrees = 15.0f;    // a neighbour's normal this far: the shape turns here
 constexpr float kLatticeDegrees = 1.0f;  // a normal this near a lattice axis: a lattice face
 constexpr float kNearGain = 50.0f;       // the averaged mark at which the local mean takes over
+constexpr size_t kBlockGrain = 1024;     // blocks (or other vertices) a thread takes at a time
 
 // One Jacobi round at vertex v over its corner list, by slot: its value and its neighbours',
 // summed in the corner list's order, times its weight (1 / (1 + valence)). Every path below sums
@@ -129,8 +130,11 @@ VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds, int wid
     size_t otherCount = 0;
     // (A free vertex's normal is its lane's in `fit`, slot by slot; empty slots' are 0.)
     const FitBlock *const fit = s.fit;
-    for (size_t slot = 0; slot < s.freeSlots; ++slot)
-        along[slot] = glm::dot(fit[slot / 4].n(int(slot % 4)), offset[slot].d);
+    StageThreads &threads = s.threads;
+    threads.forRanges(s.freeSlots, 4 * kBlockGrain, [&](size_t first, size_t last) {
+        for (size_t slot = first; slot < last; ++slot)
+            along[slot] = glm::dot(fit[slot / 4].n(int(slot % 4)), offset[slot].d);
+    });
     for (size_t v = 0; v < V; ++v) {
         const uint32_t slot = rank[v];
         weight[slot] = 1.0f / float(1 + start[v + 1] - start[v]);
@@ -140,35 +144,42 @@ VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds, int wid
     // `count` rounds on `values` (by slot; `spare` as large), the result in `values`.
     // The same sums in the same order as over each vertex's corner list: a regular block's lists
     // (sweep_layout.cpp) are that list padded with the zero slot, whose 0 adds nothing.
+    // Each round's slots are independent (Jacobi): the blocks and the other vertices split
+    // between the threads, the same sums either way.
     auto average = [&](float *&values, float *&spare, int count) {
         for (int round = 0; round < count; ++round) {
-            for (size_t block = 0; block < blocks; ++block) {
-                if (!regular[block])
-                    continue;
+            threads.forRanges(blocks, kBlockGrain, [&, values, spare](size_t firstBlock, size_t lastBlock) {
+                for (size_t block = firstBlock; block < lastBlock; ++block) {
+                    if (!regular[block])
+                        continue;
 #ifdef VOXELFAIR_SSE2
-                // The four slots' sums side by side, each in the order below.
-                const uint32_t *n = neighbours + kRegularValence * 4 * block;
-                auto gather = [&](uint32_t i) {
-                    return _mm_setr_ps(values[n[i] / sizeof(Offset)], values[n[kRegularValence + i] / sizeof(Offset)],
-                                       values[n[2 * kRegularValence + i] / sizeof(Offset)],
-                                       values[n[3 * kRegularValence + i] / sizeof(Offset)]);
-                };
-                __m128 sum = _mm_load_ps(values + 4 * block);
-                for (uint32_t i = 0; i < kRegularValence; ++i)
-                    sum = _mm_add_ps(sum, gather(i));
-                _mm_store_ps(spare + 4 * block, _mm_mul_ps(sum, _mm_load_ps(weight + 4 * block)));
-                continue;
-#endif
-                for (size_t slot = 4 * block; slot < 4 * block + 4; ++slot) {
-                    const uint32_t *n = neighbours + kRegularValence * slot;
-                    float sum = values[slot];
+                    // The four slots' sums side by side, each in the order below.
+                    const uint32_t *n = neighbours + kRegularValence * 4 * block;
+                    auto gather = [&](uint32_t i) {
+                        return _mm_setr_ps(values[n[i] / sizeof(Offset)],
+                                           values[n[kRegularValence + i] / sizeof(Offset)],
+                                           values[n[2 * kRegularValence + i] / sizeof(Offset)],
+                                           values[n[3 * kRegularValence + i] / sizeof(Offset)]);
+                    };
+                    __m128 sum = _mm_load_ps(values + 4 * block);
                     for (uint32_t i = 0; i < kRegularValence; ++i)
-                        sum += values[n[i] / sizeof(Offset)];
-                    spare[slot] = sum * weight[slot];
+                        sum = _mm_add_ps(sum, gather(i));
+                    _mm_store_ps(spare + 4 * block, _mm_mul_ps(sum, _mm_load_ps(weight + 4 * block)));
+                    continue;
+#endif
+                    for (size_t slot = 4 * block; slot < 4 * block + 4; ++slot) {
+                        const uint32_t *n = neighbours + kRegularValence * slot;
+                        float sum = values[slot];
+                        for (uint32_t i = 0; i < kRegularValence; ++i)
+                            sum += values[n[i] / sizeof(Offset)];
+                        spare[slot] = sum * weight[slot];
+                    }
                 }
-            }
-            for (size_t i = 0; i < otherCount; ++i)
-                spare[rank[others[i]]] = cornerListMean(s, values, weight, others[i]);
+            });
+            threads.forRanges(otherCount, kBlockGrain, [&, values, spare](size_t first, size_t last) {
+                for (size_t i = first; i < last; ++i)
+                    spare[rank[others[i]]] = cornerListMean(s, values, weight, others[i]);
+            });
             std::swap(values, spare);
         }
     };
@@ -181,36 +192,48 @@ VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds, int wid
         float *near = s.scratch.template take<float>(slots);
         std::fill(near, near + slots, 0.0f);
         const VertexNormal *const vertexNormal = s.vertexNormal;
-        std::vector<uint32_t> marked;
         const float turnCos = std::cos(glm::radians(kTurnDegrees));
         const float latticeCos = std::cos(glm::radians(kLatticeDegrees));
-        for (size_t v = 0; v < V; ++v) {
-            const glm::vec3 n = vertexNormal[v].n, a = glm::abs(n);
-            bool turns = !isFree(kind[v]) || std::max(a.x, std::max(a.y, a.z)) > latticeCos;
-            for (uint32_t j = start[v]; !turns && j < start[v + 1]; ++j)
-                turns = glm::dot(n, vertexNormal[next[j]].n) < turnCos;
-            near[rank[v]] = turns ? 1.0f : 0.0f;
-            if (turns)
-                marked.push_back(uint32_t(v));
-        }
+        // (Vertex ranges split between the threads, each listing its marked vertices; listed
+        // in the ranges' order.)
+        const size_t grain = 4 * kBlockGrain, chunks = (V + grain - 1) / grain;
+        std::vector<std::vector<uint32_t>> markedIn(chunks);
+        threads.run(chunks, [&](size_t chunk) {
+            for (size_t v = chunk * grain; v < std::min(V, (chunk + 1) * grain); ++v) {
+                const glm::vec3 n = vertexNormal[v].n, a = glm::abs(n);
+                bool turns = !isFree(kind[v]) || std::max(a.x, std::max(a.y, a.z)) > latticeCos;
+                for (uint32_t j = start[v]; !turns && j < start[v + 1]; ++j)
+                    turns = glm::dot(n, vertexNormal[next[j]].n) < turnCos;
+                near[rank[v]] = turns ? 1.0f : 0.0f;
+                if (turns)
+                    markedIn[chunk].push_back(uint32_t(v));
+            }
+        });
+        std::vector<uint32_t> marked;
+        for (const std::vector<uint32_t> &m : markedIn)
+            marked.insert(marked.end(), m.begin(), m.end());
         averageNearMarks(s, weight, marked, rounds, near, smooth,
                          [&](float *&values, float *&spare, int count) { average(values, spare, count); });
-        for (size_t slot = 0; slot < s.freeSlots; ++slot) {
-            const float t = std::min(1.0f, kNearGain * near[slot]);
-            along[slot] = t * local[slot] + (1.0f - t) * along[slot];
-        }
+        threads.forRanges(s.freeSlots, 4 * kBlockGrain, [&](size_t first, size_t last) {
+            for (size_t slot = first; slot < last; ++slot) {
+                const float t = std::min(1.0f, kNearGain * near[slot]);
+                along[slot] = t * local[slot] + (1.0f - t) * along[slot];
+            }
+        });
     }
     std::vector<uint8_t> held(s.anchored.empty() ? 0 : V, 0);
     for (uint32_t v : s.anchored)
         held[v] = 1;
     const float half = s.half;
-    for (size_t slot = 0; slot < s.freeSlots; ++slot) {
-        const uint32_t v = vertexAt[slot];
-        if (v != kNone && (held.empty() || !held[v])) {
-            Offset &o = offset[slot];
-            o.d = glm::clamp(o.d - along[slot] * fit[slot / 4].n(int(slot % 4)), -half, half);
+    threads.forRanges(s.freeSlots, 4 * kBlockGrain, [&](size_t first, size_t last) {
+        for (size_t slot = first; slot < last; ++slot) {
+            const uint32_t v = vertexAt[slot];
+            if (v != kNone && (held.empty() || !held[v])) {
+                Offset &o = offset[slot];
+                o.d = glm::clamp(o.d - along[slot] * fit[slot / 4].n(int(slot % 4)), -half, half);
+            }
         }
-    }
+    });
 }
 
 template void removeDrift(FairingState<true> &, int, int);

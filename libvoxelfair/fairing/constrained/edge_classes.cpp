@@ -39,20 +39,27 @@
 namespace voxelfair::constrained {
 inline namespace VOXELFAIR_SIMD_VARIANT {
 
+namespace {
+constexpr size_t kCreaseGrain = 4096;  // creases a thread takes at a time
+}  // namespace
+
 template <bool kQuads>
-VOXELFAIR_NOINLINE void classifyEdges(const Polygons<kQuads> &k, const uint32_t *twin, const glm::vec3 *positions,
-                                      const glm::vec3 *unitNormal, const ConstrainedFairingOptions &options,
-                                      size_t vertexCount, const uint32_t *creases, size_t creaseCount, uint8_t *flags,
-                                      std::vector<uint32_t> &sharpBoundary, std::vector<uint32_t> &sharpCreases,
-                                      std::vector<uint32_t> &notches, ConstrainedFairingReport &report) {
+VOXELFAIR_NOINLINE void
+classifyEdges(const Polygons<kQuads> &k, const uint32_t *twin, const glm::vec3 *positions, const glm::vec3 *unitNormal,
+              const ConstrainedFairingOptions &options, size_t vertexCount, const uint32_t *creases, size_t creaseCount,
+              uint8_t *flags, std::vector<uint32_t> &sharpBoundary, std::vector<uint32_t> &sharpCreases,
+              std::vector<uint32_t> &notches, ConstrainedFairingReport &report, StageThreads &threads) {
     // Convex or concave: the far end of the other polygon's next edge lies below this polygon's
-    // plane, or not.
-    for (const uint32_t *crease = creases; crease != creases + creaseCount; ++crease) {
-        const uint32_t c = *crease, t = twin[c];  // t runs b -> a
-        const uint32_t a = k.indices[c], far = k.nextVertex(k.nextCorner(t));
-        flags[c] = flags[t] =
-            glm::dot(unitNormal[k.polygonOf(c)], positions[far] - positions[a]) < 0.0f ? kConvex : kConcave;
-    }
+    // plane, or not. (Creases in ranges split between the threads: each edge's two corners are
+    // its own.)
+    threads.forRanges(creaseCount, kCreaseGrain, [&](size_t first, size_t last) {
+        for (const uint32_t *crease = creases + first; crease != creases + last; ++crease) {
+            const uint32_t c = *crease, t = twin[c];  // t runs b -> a
+            const uint32_t a = k.indices[c], far = k.nextVertex(k.nextCorner(t));
+            flags[c] = flags[t] =
+                glm::dot(unitNormal[k.polygonOf(c)], positions[far] - positions[a]) < 0.0f ? kConvex : kConcave;
+        }
+    });
     report.creaseEdges = creaseCount;
     for (uint32_t c : sharpBoundary)
         flags[c] |= kSharp;
@@ -124,38 +131,52 @@ VOXELFAIR_NOINLINE void classifyEdges(const Polygons<kQuads> &k, const uint32_t 
         uint32_t corner;
         bool thin;
     };
-    std::vector<Candidate> candidates;
-    for (const uint32_t *crease = creases; crease != creases + creaseCount; ++crease) {
-        const uint32_t c = *crease, t = twin[c];
-        if (notchCorner(c, t))
-            notches.push_back(c);
-        // Most creases of a staircase turn back one quad away on either side: a step, whatever
-        // the walks find further (the nearest crease decides below).
-        if (k.inQuad(c) && (flags[k.oppositeCorner(c)] & kCrease) && turn(k.oppositeCorner(c)) != turn(c))
-            continue;
-        if (k.inQuad(t) && (flags[k.oppositeCorner(t)] & kCrease) && turn(k.oppositeCorner(t)) != turn(c))
-            continue;
-        const WalkEnd side[2] = {walk(c, options.stepReach), walk(t, options.stepReach)};
-        // The nearest crease within stepReach decides: turning back = a riser (staircase);
-        // turning the same way one quad away = a 1-voxel plate or rod (genuine).
-        int nearest = options.stepReach + 1;
-        for (const WalkEnd &end : side)
-            if (end.corner != kNone)
-                nearest = std::min(nearest, end.steps);
-        bool step = false, sameAtNearest = false;
-        for (const WalkEnd &end : side)
-            if (end.corner != kNone && end.steps == nearest)
-                (turn(end.corner) != turn(c) ? step : sameAtNearest) = true;
-        const bool isThin = !step && sameAtNearest && nearest == 1;
-        if (!step && !isThin)
+    // The verdicts read only the crease flags: creases in ranges split between the threads, each
+    // listing its notches and candidates, joined in the ranges' order and flagged after.
+    const size_t chunks = (creaseCount + kCreaseGrain - 1) / kCreaseGrain;
+    std::vector<std::vector<uint32_t>> notchesIn(chunks);
+    std::vector<std::vector<Candidate>> candidatesIn(chunks);
+    threads.run(chunks, [&](size_t chunk) {
+        const uint32_t *const end = creases + std::min(creaseCount, (chunk + 1) * kCreaseGrain);
+        for (const uint32_t *crease = creases + chunk * kCreaseGrain; crease != end; ++crease) {
+            const uint32_t c = *crease, t = twin[c];
+            if (notchCorner(c, t))
+                notchesIn[chunk].push_back(c);
+            // Most creases of a staircase turn back one quad away on either side: a step, whatever
+            // the walks find further (the nearest crease decides below).
+            if (k.inQuad(c) && (flags[k.oppositeCorner(c)] & kCrease) && turn(k.oppositeCorner(c)) != turn(c))
+                continue;
+            if (k.inQuad(t) && (flags[k.oppositeCorner(t)] & kCrease) && turn(k.oppositeCorner(t)) != turn(c))
+                continue;
+            const WalkEnd side[2] = {walk(c, options.stepReach), walk(t, options.stepReach)};
+            // The nearest crease within stepReach decides: turning back = a riser (staircase);
+            // turning the same way one quad away = a 1-voxel plate or rod (genuine).
+            int nearest = options.stepReach + 1;
             for (const WalkEnd &end : side)
-                if (end.corner != kNone && turn(end.corner) != turn(c))
-                    step = true;
-        if (step)
-            continue;
-        flags[c] |= kSharp;
-        flags[t] |= kSharp;
-        candidates.push_back({c, isThin});
+                if (end.corner != kNone)
+                    nearest = std::min(nearest, end.steps);
+            bool step = false, sameAtNearest = false;
+            for (const WalkEnd &end : side)
+                if (end.corner != kNone && end.steps == nearest)
+                    (turn(end.corner) != turn(c) ? step : sameAtNearest) = true;
+            const bool isThin = !step && sameAtNearest && nearest == 1;
+            if (!step && !isThin)
+                for (const WalkEnd &end : side)
+                    if (end.corner != kNone && turn(end.corner) != turn(c))
+                        step = true;
+            if (step)
+                continue;
+            candidatesIn[chunk].push_back({c, isThin});
+        }
+    });
+    std::vector<Candidate> candidates;
+    for (size_t chunk = 0; chunk < chunks; ++chunk) {
+        notches.insert(notches.end(), notchesIn[chunk].begin(), notchesIn[chunk].end());
+        candidates.insert(candidates.end(), candidatesIn[chunk].begin(), candidatesIn[chunk].end());
+    }
+    for (const Candidate &candidate : candidates) {
+        flags[candidate.corner] |= kSharp;
+        flags[twin[candidate.corner]] |= kSharp;
     }
     if (candidates.empty())
         return;
@@ -243,7 +264,7 @@ VOXELFAIR_NOINLINE void findVertexKinds(FairingState<kQuads> &s) {
     template void classifyEdges(const Polygons<kQuads> &, const uint32_t *, const glm::vec3 *, const glm::vec3 *,      \
                                 const ConstrainedFairingOptions &, size_t, const uint32_t *, size_t, uint8_t *,        \
                                 std::vector<uint32_t> &, std::vector<uint32_t> &, std::vector<uint32_t> &,             \
-                                ConstrainedFairingReport &);                                                           \
+                                ConstrainedFairingReport &, StageThreads &);                                           \
     template void findVertexKinds(FairingState<kQuads> &);
 VOXELFAIR_INSTANTIATE(true)
 VOXELFAIR_INSTANTIATE(false)

@@ -27,12 +27,14 @@
 
 #include "fairing/constrained/polygon_corners.h"
 #include "fairing/constrained/position_kernel.h"
+#include "fairing/constrained/stage_threads.h"
 #include "fairing/constrained/work_arena.h"
 #include "fairing/constrained_fairing.h"
 
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <thread>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -57,6 +59,14 @@ constexpr uint8_t kCrease = kConvex | kConcave;
 // The vertex-index tiles the sweeps are ordered in (see sweep_layout.cpp).
 constexpr uint32_t kTileSize = 16384;
 
+// Threads for a call: options.threads (0: one per hardware thread), one per kVerticesPerThread
+// vertices at most (a helper's start and wake-ups cost more than a small mesh's stages).
+constexpr size_t kVerticesPerThread = 16384;
+inline int stageThreadCount(int requested, size_t vertexCount) {
+    const size_t wanted = requested > 0 ? size_t(requested) : std::max(1u, std::thread::hardware_concurrency());
+    return int(std::clamp<size_t>(std::min(wanted, vertexCount / kVerticesPerThread), 1, 64));
+}
+
 // A vertex normal, padded to 16 bytes for whole-register loads and stores.
 struct alignas(16) VertexNormal {
     glm::vec3 n;
@@ -71,20 +81,21 @@ struct FairingState {
         : positions(positions_), input(positions_), V(vertexCount), P(polygonCount),
           cornerCount(polygonOffsets[polygonCount]), offsets(polygonOffsets), indices(polygonIndices),
           selected(vertexSelected), options(options_), report(report_),
-          storedLevels(std::max(options_.normalLevels - 1, 1)), scratch(scratchBytes()), arrays(arraysBytes()) {}
+          storedLevels(std::max(options_.normalLevels - 1, 1)), scratch(scratchBytes()), arrays(arraysBytes()),
+          threads(stageThreadCount(options_.threads, vertexCount)) {}
 
     // The arrays that live through the call, in one block.
     size_t arraysBytes() const {
         return Arena::bytes<VertexKind>(V) + Arena::bytes<uint8_t>(P) + Arena::bytes<glm::vec3>(P + 2) +
                Arena::bytes<uint32_t>(kQuads ? 0 : cornerCount) + Arena::bytes<uint32_t>(V + 2) +
-               Arena::bytes<uint32_t>(cornerCount + 8) + Arena::bytes<uint32_t>(size_t(storedLevels) * cornerCount) +
-               Arena::bytes<uint32_t>(V);
+               Arena::bytes<uint32_t>(cornerCount) + Arena::bytes<uint32_t>(cornerCount + 8) +
+               Arena::bytes<uint32_t>(size_t(storedLevels) * cornerCount) + Arena::bytes<uint32_t>(V);
     }
     // The block for buildCorners' and classifyEdges' temporaries, then for step 3's arrays (see
     // buildSlots; more if the waves need more padding than an eighth of the vertices).
     size_t scratchBytes() const {
-        const size_t setup = Arena::bytes<uint32_t>(cornerCount) + Arena::bytes<uint32_t>(cornerCount + 8) +
-                             Arena::bytes<uint8_t>(cornerCount) + Arena::bytes<uint32_t>(cornerCount / 2 + 1);
+        const size_t setup = Arena::bytes<uint32_t>(cornerCount + 8) + Arena::bytes<uint8_t>(cornerCount) +
+                             Arena::bytes<uint32_t>(cornerCount / 2 + 1);
         return std::max(setup, passesBytes(V + V / 8 + 4));
     }
     size_t passesBytes(size_t freeSlots) const {
@@ -110,9 +121,9 @@ struct FairingState {
         k = Polygons<kQuads>{offsets, indices, polygonTable};
         vertexStart = arrays.take<uint32_t>(V + 2);
         vertexNext = arrays.take<uint32_t>(cornerCount + 8);
+        vertexCorners = arrays.take<uint32_t>(cornerCount);
         twin = arrays.take<uint32_t>(size_t(storedLevels) * cornerCount);
         rank = arrays.take<uint32_t>(V);
-        vertexCorners = scratch.take<uint32_t>(cornerCount);
         vertexPrevious = scratch.take<uint32_t>(cornerCount + 8);
         edgeFlags = scratch.take<uint8_t>(cornerCount);
         creases = scratch.take<uint32_t>(cornerCount / 2 + 1);
@@ -147,14 +158,16 @@ struct FairingState {
     float half = 0.0f;       // the cells' half-width
 
     Arena scratch, arrays;  // the temporaries, then step 3's arrays; the call's arrays
+    StageThreads threads;   // the data-parallel stages' (stage_threads.h)
     Polygons<kQuads> k{};
     VertexKind *kind = nullptr;
     uint8_t *live = nullptr;
     glm::vec3 *normal = nullptr, *filtered = nullptr;  // P + 2: [P] (and [P + 1]) stay zero
     uint32_t *vertexStart = nullptr;                   // CSR of the corners of live polygons at each vertex:
     uint32_t *vertexNext = nullptr;                    // their next vertices (8 more entries: see buildCorners),
-    uint32_t *vertexCorners = nullptr, *vertexPrevious = nullptr;  // and, while building, the rest
-    uint32_t *twin = nullptr;  // then step 2's level 0, and the tables of levels 1.. after it
+    uint32_t *vertexCorners = nullptr;                 // the corners themselves (ascending),
+    uint32_t *vertexPrevious = nullptr;                // and, while building, their previous vertices
+    uint32_t *twin = nullptr;                          // then step 2's level 0, and the tables of levels 1.. after it
     uint8_t *edgeFlags = nullptr;
     uint32_t *creases = nullptr;  // one corner per edge (the lower), creaseCount of them
     size_t creaseCount = 0;
@@ -192,7 +205,7 @@ void classifyEdges(const Polygons<kQuads> &k, const uint32_t *twin, const glm::v
                    const glm::vec3 *unitNormal, const ConstrainedFairingOptions &options, size_t vertexCount,
                    const uint32_t *creases, size_t creaseCount, uint8_t *flags, std::vector<uint32_t> &sharpBoundary,
                    std::vector<uint32_t> &sharpCreases, std::vector<uint32_t> &notches,
-                   ConstrainedFairingReport &report);
+                   ConstrainedFairingReport &report, StageThreads &threads);
 template <bool kQuads>
 void findVertexKinds(FairingState<kQuads> &s);
 template <bool kQuads>

@@ -17,10 +17,11 @@
 // notch edge (FairingState::notches: a turned box's corner, edge_classes.cpp): the faces beside it average their
 // normals with the corner's only at level 0, one quad deep, and stay flat.
 //
-// Contract (filterNormals; reads normal, the level tables; fills normal, vertexNormal): `levels`
-// Jacobi rounds, each normal[p] <- normalize(normal[p] + the four level-i neighbours' normals, a
-// missing one counting as zero); then vertexNormal[v] = normalize(sum of v's polygons' filtered
-// normals), summed polygon by polygon. The quad path gives the same bits as the general one.
+// Contract (filterNormals; reads normal, the level tables, the corner lists; fills normal,
+// vertexNormal): `levels` Jacobi rounds, each normal[p] <- normalize(normal[p] + the four level-i
+// neighbours' normals, a missing one counting as zero); then vertexNormal[v] = normalize(sum of
+// v's polygons' filtered normals), summed in polygon order. The quad path gives the same bits as
+// the general one; polygons and vertices are split between the threads (stage_threads.h).
 #include "fairing/constrained/fairing_state.h"
 
 #include <algorithm>
@@ -61,20 +62,20 @@ VOXELFAIR_NOINLINE void buildLevels(FairingState<kQuads> &s) {
 
 namespace {
 
+constexpr size_t kGrain = 4096;  // polygons or vertices a thread takes at a time (a multiple of 4)
+
 #ifdef VOXELFAIR_SSE2
-// One level of filterNormals on quads, a normal per register and four normalized at once (a
-// square root and a division each otherwise make up most of the time): the same sums and
-// products, so the same results. Loads and stores of 16 bytes at the 12-byte normals read one
-// float past (arrays of P + 2) and write 0 into the next normal's x (its own turn comes next;
-// [P] stays 0).
+// One level of filterNormals on the quads [first, last), a normal per register and four
+// normalized at once (a square root and a division each otherwise make up most of the time):
+// the same sums and products, so the same results. Loads and stores of 16 bytes at the 12-byte
+// normals read one float past (arrays of P + 2) and write 0 into the next normal's x (its own
+// turn comes next; [P] stays 0), but the last of the range, whose next may be another thread's.
 template <bool kQuads>
-VOXELFAIR_NOINLINE void filterQuads(FairingState<kQuads> &s, const uint32_t *table, bool composed, bool toVertices) {
+VOXELFAIR_NOINLINE void filterQuads(FairingState<kQuads> &s, const uint32_t *table, bool composed, size_t first,
+                                    size_t last) {
     const glm::vec3 *const normal = s.normal;
     glm::vec3 *const filtered = s.filtered;
-    VertexNormal *const vertexNormal = s.vertexNormal;
-    const uint32_t *const indices = s.indices;
-    const size_t P = s.P;
-    const uint32_t none = uint32_t(P);
+    const uint32_t none = uint32_t(s.P);
     const __m128 xyz = _mm_castsi128_ps(_mm_set_epi32(0, -1, -1, -1));
     auto load = [&](uint32_t p) { return _mm_loadu_ps(&normal[p].x); };
     auto sumAround = [&](size_t p) {
@@ -89,16 +90,13 @@ VOXELFAIR_NOINLINE void filterQuads(FairingState<kQuads> &s, const uint32_t *tab
         return _mm_and_ps(sum, xyz);
     };
     auto store = [&](size_t p, __m128 unit) {
-        _mm_storeu_ps(&filtered[p].x, unit);
-        if (!toVertices)
-            return;
-        for (uint32_t i = 0; i < 4; ++i) {
-            float *n = &vertexNormal[indices[4 * p + i]].n.x;
-            _mm_store_ps(n, _mm_add_ps(_mm_load_ps(n), unit));
-        }
+        if (p + 1 == last)
+            store3(filtered[p], unit);
+        else
+            _mm_storeu_ps(&filtered[p].x, unit);
     };
-    size_t p = 0;
-    for (; p + 4 <= P; p += 4) {
+    size_t p = first;
+    for (; p + 4 <= last; p += 4) {
         __m128 a = sumAround(p), b = sumAround(p + 1), c = sumAround(p + 2), d = sumAround(p + 3);
         normalizeFour(a, b, c, d);
         store(p, a);
@@ -106,7 +104,7 @@ VOXELFAIR_NOINLINE void filterQuads(FairingState<kQuads> &s, const uint32_t *tab
         store(p + 2, c);
         store(p + 3, d);
     }
-    for (; p < P; ++p) {
+    for (; p < last; ++p) {
         __m128 a = sumAround(p), b = a, c = a, d = a;
         normalizeFour(a, b, c, d);
         store(p, a);
@@ -114,41 +112,61 @@ VOXELFAIR_NOINLINE void filterQuads(FairingState<kQuads> &s, const uint32_t *tab
 }
 #endif
 
+// vertexNormal[v] = the sum of the normals of v's polygons (in polygon order, as a loop over the
+// polygons adding to their vertices would sum them), for v in [first, last).
+template <bool kQuads>
+void sumAtVertices(FairingState<kQuads> &s, const glm::vec3 *normal, size_t first, size_t last) {
+    const uint32_t *const start = s.vertexStart, *const corners = s.vertexCorners;
+    VertexNormal *const vertexNormal = s.vertexNormal;
+    const Polygons<kQuads> k = s.k;
+    for (size_t v = first; v < last; ++v) {
+#ifdef VOXELFAIR_SSE2
+        __m128 sum = _mm_setzero_ps();  // lane 3 masked off: the normals are read 16 bytes at a time
+        for (uint32_t j = start[v]; j < start[v + 1]; ++j)
+            sum = _mm_add_ps(sum, _mm_loadu_ps(&normal[k.polygonOf(corners[j])].x));
+        _mm_store_ps(&vertexNormal[v].n.x, _mm_and_ps(sum, _mm_castsi128_ps(_mm_set_epi32(0, -1, -1, -1))));
+#else
+        glm::vec3 sum(0.0f);
+        for (uint32_t j = start[v]; j < start[v + 1]; ++j)
+            sum += normal[k.polygonOf(corners[j])];
+        vertexNormal[v] = VertexNormal{sum, 0.0f};
+#endif
+    }
+}
+
 }  // namespace
 
+// (Polygons that are not live are on no vertex's corner list; their filtered normals are 0, so
+// adding them would change no sum.)
 template <bool kQuads>
 VOXELFAIR_NOINLINE void filterNormals(FairingState<kQuads> &s, int levels) {
     const Polygons<kQuads> k = s.k;
-    std::fill(s.vertexNormal, s.vertexNormal + s.V, VertexNormal{glm::vec3(0.0f), 0.0f});
+    StageThreads &threads = s.threads;
     for (int level = 0; level < levels; ++level) {
         const bool composed = level == s.storedLevels;  // the top level of the first pass
-        const bool toVertices = level == levels - 1;
         const uint32_t *table = s.levelTable(composed ? level - 1 : level);
+        threads.forRanges(s.P, kGrain, [&](size_t first, size_t last) {
 #ifdef VOXELFAIR_SSE2
-        if constexpr (kQuads) {
-            filterQuads(s, table, composed, toVertices);
-            std::swap(s.normal, s.filtered);
-            continue;
-        }
-#endif
-        for (size_t p = 0; p < s.P; ++p) {
-            glm::vec3 sum = s.normal[p];
-            for (uint32_t c = k.first(p); c < k.last(p); ++c) {
-                const uint32_t e = composed ? s.doubled(table, c) : table[c];
-                sum += s.normal[e != kNone ? k.polygonOf(e) : uint32_t(s.P)];
+            if constexpr (kQuads) {
+                filterQuads(s, table, composed, first, last);
+                return;
             }
-            s.filtered[p] = normalizedOrZero(sum);
-            if (toVertices)
-                for (uint32_t c = k.first(p); c < k.last(p); ++c)
-                    s.vertexNormal[s.indices[c]].n += s.filtered[p];
-        }
+#endif
+            for (size_t p = first; p < last; ++p) {
+                glm::vec3 sum = s.normal[p];
+                for (uint32_t c = k.first(p); c < k.last(p); ++c) {
+                    const uint32_t e = composed ? s.doubled(table, c) : table[c];
+                    sum += s.normal[e != kNone ? k.polygonOf(e) : uint32_t(s.P)];
+                }
+                s.filtered[p] = normalizedOrZero(sum);
+            }
+        });
         std::swap(s.normal, s.filtered);
     }
-    if (levels == 0)
-        for (size_t p = 0; p < s.P; ++p)
-            for (uint32_t c = k.first(p); c < k.last(p); ++c)
-                s.vertexNormal[s.indices[c]].n += s.normal[p];
-    normalizeAll(&s.vertexNormal[0].n, s.V, sizeof(VertexNormal));
+    threads.forRanges(s.V, kGrain, [&](size_t first, size_t last) {
+        sumAtVertices(s, s.normal, first, last);
+        normalizeAll(&s.vertexNormal[first].n, last - first, sizeof(VertexNormal));
+    });
 }
 
 template void buildLevels(FairingState<true> &);

@@ -122,11 +122,14 @@ VOXELFAIR_NOINLINE void findFairedNormals(FairingState<kQuads> &s) {
             const uint32_t v = indices[i];
             return _mm_add_ps(load3(input[v]), load3(offset[rank[v]].d));
         };
-        for (uint32_t p = 0; p < P; ++p)
-            if (live[p])
-                store3(normal[p],
-                       cross3(_mm_sub_ps(at(4 * p + 2), at(4 * p)), _mm_sub_ps(at(4 * p + 3), at(4 * p + 1))));
-        normalizeAll(normal, P);
+        // Polygon by polygon, in ranges split between the threads (stage_threads.h).
+        s.threads.forRanges(P, 4096, [&](size_t first, size_t last) {
+            for (size_t p = first; p < last; ++p)
+                if (live[p])
+                    store3(normal[p], cross3(_mm_sub_ps(at(uint32_t(4 * p + 2)), at(uint32_t(4 * p))),
+                                             _mm_sub_ps(at(uint32_t(4 * p + 3)), at(uint32_t(4 * p + 1)))));
+            normalizeAll(normal + first, last - first);
+        });
         return;
     }
 #endif

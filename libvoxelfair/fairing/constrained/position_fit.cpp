@@ -26,7 +26,9 @@
 #include "fairing/constrained/fairing_state.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <cstring>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -34,6 +36,10 @@
 
 namespace voxelfair::constrained {
 inline namespace VOXELFAIR_SIMD_VARIANT {
+
+namespace {
+constexpr size_t kVertexGrain = 4096;  // vertices (or slots) a thread takes at a time
+}  // namespace
 
 template <bool kQuads>
 VOXELFAIR_NOINLINE void fitFreeVertices(FairingState<kQuads> &s) {
@@ -49,34 +55,39 @@ VOXELFAIR_NOINLINE void fitFreeVertices(FairingState<kQuads> &s) {
     // away, |n + n_u|^2 = 2 + 2 cos(angle) below its bound.
     uint8_t *const turning = s.turning;
     const float turned = 2.0f + 2.0f * std::cos(glm::radians(s.options.featureSpreadDegrees));
-    bool anyTurning = false;
-    for (size_t v = 0; v < s.V; ++v) {
-        if (!isFree(kind[v]))
-            continue;
-        float sum2 = 0.0f, base = 0.0f, minE2 = 4.0f;
-        bool allUsed = true;
-#ifdef VOXELFAIR_SSE2
-        // (Vertex normals are 16-byte blocks with a zero fourth float: whole loads.)
-        auto normalOf = [vertexNormal](uint32_t u) { return _mm_load_ps(&vertexNormal[u].n.x); };
-        const __m128 n = normalOf(uint32_t(v)), x = load3(input[v]);
-        __m128 sumS = _mm_setzero_ps(), products = sumS;  // base: the sum of products' lanes
-        for (uint32_t i = start[v]; i < start[v + 1]; ++i) {
-            const uint32_t u = next[i];
-            const __m128 e = _mm_add_ps(n, isFree(kind[u]) ? normalOf(u) : n);
-            const float e2 = dot3(e, e);
-            minE2 = std::min(minE2, e2);
-            if (!(e2 > 2.0f)) {
-                allUsed = false;
+    std::atomic<bool> anyTurning{false};
+    // Vertex by vertex, each writing its own slot's lane, tile by tile split between the threads:
+    // a block's slots are of one tile's vertices (sweep_layout.cpp), so a tile's vertices alone
+    // write its blocks' flags.
+    s.threads.forRanges(s.V, kTileSize, [&](size_t firstVertex, size_t lastVertex) {
+        bool turns = false;
+        for (size_t v = firstVertex; v < lastVertex; ++v) {
+            if (!isFree(kind[v]))
                 continue;
+            float sum2 = 0.0f, base = 0.0f, minE2 = 4.0f;
+            bool allUsed = true;
+#ifdef VOXELFAIR_SSE2
+            // (Vertex normals are 16-byte blocks with a zero fourth float: whole loads.)
+            auto normalOf = [vertexNormal](uint32_t u) { return _mm_load_ps(&vertexNormal[u].n.x); };
+            const __m128 n = normalOf(uint32_t(v)), x = load3(input[v]);
+            __m128 sumS = _mm_setzero_ps(), products = sumS;  // base: the sum of products' lanes
+            for (uint32_t i = start[v]; i < start[v + 1]; ++i) {
+                const uint32_t u = next[i];
+                const __m128 e = _mm_add_ps(n, isFree(kind[u]) ? normalOf(u) : n);
+                const float e2 = dot3(e, e);
+                minE2 = std::min(minE2, e2);
+                if (!(e2 > 2.0f)) {
+                    allUsed = false;
+                    continue;
+                }
+                sum2 += e2;
+                sumS = _mm_add_ps(sumS, e);
+                products = _mm_add_ps(products, _mm_mul_ps(e, _mm_sub_ps(load3(input[u]), x)));
             }
-            sum2 += e2;
-            sumS = _mm_add_ps(sumS, e);
-            products = _mm_add_ps(products, _mm_mul_ps(e, _mm_sub_ps(load3(input[u]), x)));
-        }
-        base = dot3(products, _mm_set1_ps(1.0f));
-        alignas(16) float nOut[4], sOut[4];
-        _mm_store_ps(nOut, n);
-        _mm_store_ps(sOut, sumS);
+            base = dot3(products, _mm_set1_ps(1.0f));
+            alignas(16) float nOut[4], sOut[4];
+            _mm_store_ps(nOut, n);
+            _mm_store_ps(sOut, sumS);
 #else
         const glm::vec3 n = vertexNormal[v].n;
         glm::vec3 sumS(0.0f);
@@ -95,28 +106,34 @@ VOXELFAIR_NOINLINE void fitFreeVertices(FairingState<kQuads> &s) {
         }
         const float nOut[3] = {n.x, n.y, n.z}, sOut[3] = {sumS.x, sumS.y, sumS.z};
 #endif
-        const uint32_t slot = rank[v];
-        turning[v] = minE2 < turned;
-        anyTurning = anyTurning || minE2 < turned;
-        if (!allUsed)
-            kind[v] = VertexKind::FreeIrregular;
-        if (kind[v] != VertexKind::Free)
-            regularBlock[slot / 4] = 0;
-        FitBlock &f = fit[slot / 4];
-        const int lane = int(slot % 4);
-        f.stepScale[lane] = sum2 > 0.0f ? 2.0f / sum2 : 0.0f;
-        f.nx[lane] = nOut[0];
-        f.ny[lane] = nOut[1];
-        f.nz[lane] = nOut[2];
-        f.base[lane] = base;
-        f.sx[lane] = sOut[0];
-        f.sy[lane] = sOut[1];
-        f.sz[lane] = sOut[2];
-    }
-    s.anyTurning = anyTurning;
+            const uint32_t slot = rank[v];
+            turning[v] = minE2 < turned;
+            turns = turns || minE2 < turned;
+            if (!allUsed)
+                kind[v] = VertexKind::FreeIrregular;
+            if (kind[v] != VertexKind::Free)
+                regularBlock[slot / 4] = 0;
+            FitBlock &f = fit[slot / 4];
+            const int lane = int(slot % 4);
+            f.stepScale[lane] = sum2 > 0.0f ? 2.0f / sum2 : 0.0f;
+            f.nx[lane] = nOut[0];
+            f.ny[lane] = nOut[1];
+            f.nz[lane] = nOut[2];
+            f.base[lane] = base;
+            f.sx[lane] = sOut[0];
+            f.sy[lane] = sOut[1];
+            f.sz[lane] = sOut[2];
+        }
+        if (turns)
+            anyTurning.store(true, std::memory_order_relaxed);
+    });
+    s.anyTurning = anyTurning.load();
     // n . d with this pass's normals, slot by slot.
-    for (size_t slot = 0; slot < s.freeSlots; ++slot)
-        s.offset[slot].alongNormal = glm::dot(fit[slot / 4].n(int(slot % 4)), s.offset[slot].d);
+    Offset *const offset = s.offset;
+    s.threads.forRanges(s.freeSlots, kVertexGrain, [&](size_t first, size_t last) {
+        for (size_t slot = first; slot < last; ++slot)
+            offset[slot].alongNormal = glm::dot(fit[slot / 4].n(int(slot % 4)), offset[slot].d);
+    });
 }
 
 namespace {
@@ -184,18 +201,33 @@ VOXELFAIR_NOINLINE void sweep(FairingState<kQuads> &s, bool forward) {
 template <bool kQuads>
 VOXELFAIR_NOINLINE void finish(FairingState<kQuads> &s) {
     const float moved2 = 1e-12f * s.report.voxelSize * s.report.voxelSize, wall = s.half * (1.0f - 1e-5f);
+    // Vertex by vertex in ranges split between the threads; the counts and the maximum do not
+    // depend on the order.
+    std::atomic<size_t> moved{0}, clamped{0};
+    std::atomic<uint32_t> maxMove2Bits{0};  // a non-negative float's bits order as the float
+    s.threads.forRanges(s.V, kVertexGrain, [&](size_t first, size_t last) {
+        float maxMove2 = 0.0f;
+        size_t movedHere = 0, clampedHere = 0;
+        for (size_t v = first; v < last; ++v) {
+            if (!isFree(s.kind[v]) && s.kind[v] != VertexKind::EdgeLine)
+                continue;
+            const glm::vec3 d = s.offset[s.rank[v]].d;
+            s.positions[v] = s.input[v] + d;
+            const float d2 = glm::dot(d, d);
+            maxMove2 = std::max(maxMove2, d2);
+            movedHere += d2 > moved2;
+            clampedHere += std::max(std::abs(d.x), std::max(std::abs(d.y), std::abs(d.z))) >= wall;
+        }
+        moved += movedHere;
+        clamped += clampedHere;
+        uint32_t bits = 0;
+        std::memcpy(&bits, &maxMove2, sizeof bits);
+        for (uint32_t seen = maxMove2Bits.load(); seen < bits && !maxMove2Bits.compare_exchange_weak(seen, bits);) {
+        }
+    });
     float maxMove2 = 0.0f;
-    size_t moved = 0, clamped = 0;
-    for (size_t v = 0; v < s.V; ++v) {
-        if (!isFree(s.kind[v]) && s.kind[v] != VertexKind::EdgeLine)
-            continue;
-        const glm::vec3 d = s.offset[s.rank[v]].d;
-        s.positions[v] = s.input[v] + d;
-        const float d2 = glm::dot(d, d);
-        maxMove2 = std::max(maxMove2, d2);
-        moved += d2 > moved2;
-        clamped += std::max(std::abs(d.x), std::max(std::abs(d.y), std::abs(d.z))) >= wall;
-    }
+    const uint32_t bits = maxMove2Bits.load();
+    std::memcpy(&maxMove2, &bits, sizeof bits);
     s.report.movedVertices = moved;
     s.report.clampedVertices = clamped;
     s.report.maxDisplacement = std::sqrt(maxMove2);

@@ -91,27 +91,32 @@ VOXELFAIR_NOINLINE void buildSlots(FairingState<kQuads> &s) {
     // Free vertices' neighbours by slot (vertex by vertex: the neighbours' ranks are near in memory).
     uint32_t *const slotNeighbours = s.slotNeighbours;
     const uint32_t *const start = s.vertexStart, *const next = s.vertexNext;
-    for (size_t v = 0; v < V; ++v) {
-        if (!isFree(kind[v]))
-            continue;
-        uint32_t *out = slotNeighbours + kRegularValence * size_t(rank[v]);
-        const uint32_t count = kind[v] == VertexKind::Free ? start[v + 1] - start[v] : 0;
-        for (uint32_t i = 0; i < kRegularValence; ++i) {
-            // (Selected, not branched on: the count varies in no pattern.)
-            const uint32_t neighbour = rank[next[start[v] + std::min(i, std::max(count, 1u) - 1)]];
-            out[i] = uint32_t(sizeof(Offset)) * (i < count ? neighbour : zeroSlot);
+    // (Vertex ranges, then slot ranges, split between the threads: each writes its own slots.)
+    s.threads.forRanges(V, 4096, [&](size_t first, size_t last) {
+        for (size_t v = first; v < last; ++v) {
+            if (!isFree(kind[v]))
+                continue;
+            uint32_t *out = slotNeighbours + kRegularValence * size_t(rank[v]);
+            const uint32_t count = kind[v] == VertexKind::Free ? start[v + 1] - start[v] : 0;
+            for (uint32_t i = 0; i < kRegularValence; ++i) {
+                // (Selected, not branched on: the count varies in no pattern.)
+                const uint32_t neighbour = rank[next[start[v] + std::min(i, std::max(count, 1u) - 1)]];
+                out[i] = uint32_t(sizeof(Offset)) * (i < count ? neighbour : zeroSlot);
+            }
         }
-    }
-    for (size_t slot = 0; slot < freeSlots; ++slot) {
-        if (vertexAt[slot] != kNone)
-            continue;
-        std::fill(slotNeighbours + kRegularValence * slot, slotNeighbours + kRegularValence * (slot + 1),
-                  uint32_t(sizeof(Offset)) * zeroSlot);
-        FitBlock &f = s.fit[slot / 4];
-        const int lane = int(slot % 4);
-        f.stepScale[lane] = f.nx[lane] = f.ny[lane] = f.nz[lane] = 0.0f;
-        f.base[lane] = f.sx[lane] = f.sy[lane] = f.sz[lane] = 0.0f;
-    }
+    });
+    s.threads.forRanges(freeSlots / 4, 1024, [&](size_t firstBlock, size_t lastBlock) {
+        for (size_t slot = 4 * firstBlock; slot < 4 * lastBlock; ++slot) {
+            if (vertexAt[slot] != kNone)
+                continue;
+            std::fill(slotNeighbours + kRegularValence * slot, slotNeighbours + kRegularValence * (slot + 1),
+                      uint32_t(sizeof(Offset)) * zeroSlot);
+            FitBlock &f = s.fit[slot / 4];
+            const int lane = int(slot % 4);
+            f.stepScale[lane] = f.nx[lane] = f.ny[lane] = f.nz[lane] = 0.0f;
+            f.base[lane] = f.sx[lane] = f.sy[lane] = f.sz[lane] = 0.0f;
+        }
+    });
 }
 
 template void buildSlots(FairingState<true> &);

@@ -1,0 +1,140 @@
+// The threads of one call of fairConstrained: the caller and a few helpers kept for the whole
+// call, which run the data-parallel stages (each vertex's, polygon's or slot's result depends on
+// the stage's input alone, not on the order it is computed in) chunk by chunk.
+//
+// Contract: run(chunks, chunk) calls chunk(c) exactly once for every c in [0, chunks), on any of
+// the threads, in any order, and returns when all have returned; `chunk` must not throw.
+// forRanges(n, grain, range) calls range(first, last) on the ranges [0, grain), [grain, 2 grain),
+// ... of [0, n). A stage whose chunks write disjoint results, with only order-free reductions
+// across chunks (or, max, integer counts), gives the same bits for any count().
+//
+// Why helpers that stay and chunks that are claimed: starting threads for every stage (and every
+// Jacobi round of step 5) costs tens of microseconds each, and on a loaded machine a thread that
+// is descheduled for a time slice would hold a statically split round that long. Here the
+// caller claims chunks too, and a helper that wakes late finds none left: nobody waits for a
+// thread that has not started. A helper spins a short while for the next run and then sleeps on
+// a condition variable, so back-to-back runs cost little and a helper waiting through a serial
+// stage (the sweeps) holds no core.
+#pragma once
+
+#include <algorithm>
+#include <atomic>
+#include <condition_variable>
+#include <cstddef>
+#include <cstdint>
+#include <mutex>
+#include <thread>
+#include <type_traits>
+#include <vector>
+
+#if defined(__SSE2__) || defined(_M_X64) || defined(_M_AMD64)
+#include <emmintrin.h>
+#endif
+
+namespace voxelfair::constrained {
+
+class StageThreads {
+public:
+    // `count` threads in all (the caller is one); at least 1.
+    explicit StageThreads(int count) : count_(std::max(count, 1)) {
+        helpers_.reserve(size_t(count_ - 1));
+        for (int t = 1; t < count_; ++t)
+            helpers_.emplace_back([this] { serve(); });
+    }
+    ~StageThreads() {
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            stop_.store(true, std::memory_order_release);
+        }
+        wake_.notify_all();
+        for (std::thread &t : helpers_)
+            t.join();
+    }
+    StageThreads(const StageThreads &) = delete;
+    StageThreads &operator=(const StageThreads &) = delete;
+
+    int count() const { return count_; }
+
+    template <class Chunk>
+    void run(size_t chunks, Chunk &&chunk) {
+        if (count_ == 1 || chunks <= 1) {
+            for (size_t c = 0; c < chunks; ++c)
+                chunk(c);
+            return;
+        }
+        // Published before the claim word: a thread whose claim of this run succeeds sees them.
+        using Job = std::remove_reference_t<Chunk>;
+        job_.store(const_cast<void *>(static_cast<const void *>(&chunk)), std::memory_order_relaxed);
+        call_.store([](void *job, size_t c) { (*static_cast<Job *>(job))(c); }, std::memory_order_relaxed);
+        done_.store(0, std::memory_order_relaxed);
+        const uint64_t generation = (claim_.load(std::memory_order_relaxed) >> 32) + 1;
+        {
+            std::lock_guard<std::mutex> lock(mutex_);  // a helper about to sleep sees the new run
+            claim_.store(generation << 32 | uint64_t(chunks), std::memory_order_release);
+        }
+        wake_.notify_all();
+        work(generation);
+        for (unsigned spins = 0; done_.load(std::memory_order_acquire) != chunks; ++spins)
+            pause(spins);
+    }
+    template <class Range>
+    void forRanges(size_t n, size_t grain, Range &&range) {
+        run((n + grain - 1) / grain, [&](size_t c) { range(c * grain, std::min(n, (c + 1) * grain)); });
+    }
+
+private:
+    static void pause(unsigned spins) {
+        if (spins < kSpins) {
+#if defined(__SSE2__) || defined(_M_X64) || defined(_M_AMD64)
+            _mm_pause();
+#endif
+        } else {
+            std::this_thread::yield();
+        }
+    }
+    // Claims and runs chunks of run `generation` until none is left (the claim word holds the
+    // run's generation and how many chunks are still unclaimed).
+    void work(uint64_t generation) {
+        void *const job = job_.load(std::memory_order_relaxed);
+        void (*const call)(void *, size_t) = call_.load(std::memory_order_relaxed);
+        uint64_t claim = claim_.load(std::memory_order_acquire);
+        while (claim >> 32 == generation && (claim & 0xffffffffu) != 0) {
+            if (!claim_.compare_exchange_weak(claim, claim - 1, std::memory_order_acq_rel))
+                continue;
+            call(job, size_t((claim & 0xffffffffu) - 1));
+            done_.fetch_add(1, std::memory_order_release);
+            claim = claim_.load(std::memory_order_acquire);
+        }
+    }
+    void serve() {
+        uint64_t seen = 0;
+        for (;;) {
+            auto fresh = [&] {
+                return claim_.load(std::memory_order_acquire) >> 32 != seen || stop_.load(std::memory_order_acquire);
+            };
+            for (unsigned spins = 0; !fresh() && spins < kSpins; ++spins)
+                pause(spins);
+            if (!fresh()) {
+                std::unique_lock<std::mutex> lock(mutex_);
+                wake_.wait(lock, fresh);
+            }
+            if (stop_.load(std::memory_order_acquire))
+                return;
+            seen = claim_.load(std::memory_order_acquire) >> 32;
+            work(seen);
+        }
+    }
+
+    static constexpr unsigned kSpins = 1u << 11;  // some tens of microseconds of pause instructions
+    const int count_;
+    std::vector<std::thread> helpers_;
+    std::mutex mutex_;
+    std::condition_variable wake_;
+    std::atomic<uint64_t> claim_{0};
+    std::atomic<size_t> done_{0};
+    std::atomic<void *> job_{nullptr};
+    std::atomic<void (*)(void *, size_t)> call_{nullptr};
+    std::atomic<bool> stop_{false};
+};
+
+}  // namespace voxelfair::constrained
