@@ -74,8 +74,9 @@ constexpr int kBandRows = 32;
 // at weights (l1[k], l2[k]) on the target face (corner 0 at o, edges e1, e2, corner normals tn).
 // Each lane repeats the scalar path's float operations in its order (p = o + l1 e1 + l2 e2,
 // facing = l0 tn0 + l1 tn1 + l2 tn2, dot products summed x + y + z), so that the answers and the
-// normals are the scalar build's bit for bit. Bit k of the result: lane k holds; lane k of n[a]
-// gets its interpolated source normal.
+// normals are the scalar build's bit for bit. holdsQuad: bit k of the result set when lane k
+// holds; w gets the lanes' weights on the source face. quadNormals: lane k of n[a] gets the
+// interpolated source normal at those weights (asked only for a quad that holds).
 // The target face's corner 0, edges and corner normals, each coordinate in all 4 lanes.
 struct QuadTarget {
     __m128 o[3], e1[3], e2[3], tn[3][3];
@@ -88,7 +89,7 @@ struct QuadTarget {
     }
 };
 __attribute__((always_inline)) inline int holdsQuad(const SurfaceWalk &walk, uint32_t face, __m128 L1, __m128 L2,
-                                                    const QuadTarget &t, __m128 n[3]) {
+                                                    const QuadTarget &t, __m128 w[3]) {
     const SurfaceWalk::Face &f = walk.record(face);
     auto all = [](float v) { return _mm_set1_ps(v); };
     const __m128 one = all(1.0f), zero = _mm_setzero_ps();
@@ -113,11 +114,15 @@ __attribute__((always_inline)) inline int holdsQuad(const SurfaceWalk &walk, uin
         _mm_and_ps(_mm_and_ps(_mm_cmpge_ps(w0, zero), _mm_cmpge_ps(w1, zero)), _mm_cmpge_ps(w2, zero));
     const __m128 ok = _mm_and_ps(_mm_and_ps(inside, _mm_cmple_ps(_mm_mul_ps(height, height), all(f.nearPlane))),
                                  _mm_cmpgt_ps(faces, zero));
+    w[0] = w0, w[1] = w1, w[2] = w2;
+    return _mm_movemask_ps(ok);
+}
+__attribute__((always_inline)) inline void quadNormals(const SurfaceWalk &walk, uint32_t face, const __m128 w[3],
+                                                       __m128 n[3]) {
     const glm::vec3 *cn = walk.cornerNormals(face);
     for (int a = 0; a < 3; ++a)
-        n[a] = _mm_add_ps(_mm_add_ps(_mm_mul_ps(w0, all(cn[0][a])), _mm_mul_ps(w1, all(cn[1][a]))),
-                          _mm_mul_ps(w2, all(cn[2][a])));
-    return _mm_movemask_ps(ok);
+        n[a] = _mm_add_ps(_mm_add_ps(_mm_mul_ps(w[0], _mm_set1_ps(cn[0][a])), _mm_mul_ps(w[1], _mm_set1_ps(cn[1][a]))),
+                          _mm_mul_ps(w[2], _mm_set1_ps(cn[2][a])));
 }
 #endif
 
@@ -347,16 +352,18 @@ NormalMap bakeNormalMap(const NormalBakeMesh &source, const NormalBakeMesh &targ
                                 wk = _mm_cvtpd_ps(m), m = _mm_add_pd(m, step);
                             const __m128 w01 = _mm_unpacklo_ps(w[0], w[1]), w23 = _mm_unpacklo_ps(w[2], w[3]);
                             const __m128 L1 = _mm_movelh_ps(w01, w23), L2 = _mm_movehl_ps(w23, w01);
-                            __m128 n[3];
+                            __m128 weights[3];
                             const int lanes = (1 << std::min(4, zr - x + 1)) - 1;
-                            int held = tried ? 0 : holdsQuad(*walk, hitFace, L1, L2, quadTarget, n) & lanes;
+                            int held = tried ? 0 : holdsQuad(*walk, hitFace, L1, L2, quadTarget, weights) & lanes;
                             if ((held & 1) == 0) {
                                 const uint32_t start = under[size_t(y - r0) * size_t(width) + size_t(x)];
                                 if (start != UINT32_MAX && start != hitFace &&
-                                    ((held = holdsQuad(*walk, start, L1, L2, quadTarget, n) & lanes) & 1) != 0)
+                                    ((held = holdsQuad(*walk, start, L1, L2, quadTarget, weights) & lanes) & 1) != 0)
                                     hitFace = start;
                             }
                             if ((held & 1) != 0) {
+                                __m128 n[3];
+                                quadNormals(*walk, hitFace, weights, n);
                                 if (first)
                                     rowFace = hitFace, first = false;
                                 int k = 0;  // the lanes held, up to the first that is not
