@@ -42,6 +42,32 @@ struct MaskPart {
 // Fewer faces than this are rasterised on one thread: starting threads would cost more.
 constexpr size_t kLeastParallelFaces = 4096;
 
+// rasterConservativeSpans, with a narrow triangle's rows tested block by block, as rasterRows
+// does (the same spans; most triangles are narrow on blocks at a few texels per unit).
+template <class VisitSpan>
+void conservativeBlockSpans(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double margin, int width, int height,
+                            VisitSpan &&visitSpan) {
+    raster_detail::Setup s;
+    if (!raster_detail::setup(a, b, c, s))
+        return;
+    const raster_detail::ConservativeTest test(s, margin, width, height);
+    if (test.x0 > test.x1)
+        return;
+    if (test.x1 - test.x0 >= kNarrowRows) {
+        raster_detail::spans(s, test.reach, test.x0, test.x1, test.y0, test.y1, test, visitSpan);
+        return;
+    }
+    for (int y = test.y0; y <= test.y1; ++y) {
+        int xl = test.x0, xr = test.x1;
+        while (xl <= xr && !test(xl, y))
+            ++xl;
+        while (xr >= xl && !test(xr, y))
+            --xr;
+        if (xl <= xr)
+            visitSpan(y, xl, xr);
+    }
+}
+
 // Chart c straight onto 2 x 2 blocks: the coarse mask that rasterising its texels (on the w x h
 // canvas, at `origin`), growing them by `padding` and coarsening would give. The texel mask's
 // box is the footprint's, known from the triangles' extents (each triangle's first and last
@@ -86,7 +112,7 @@ bool rasterizeBlocks(const AtlasCharts &charts, size_t c, double origin, int w, 
     bool any = false;
     for (size_t i = charts.chartFirstFace[c]; i < charts.chartFirstFace[c + 1]; ++i) {
         const glm::vec2 *uv = &charts.wedgeUv[3 * i];
-        rasterConservativeSpans(
+        conservativeBlockSpans(
             (glm::dvec2(uv[0]) * m.scale + m.offset) * 0.5, (glm::dvec2(uv[1]) * m.scale + m.offset) * 0.5,
             (glm::dvec2(uv[2]) * m.scale + m.offset) * 0.5, margin, m.width, m.height, [&](int y, int xl, int xr) {
                 any = true;
