@@ -42,31 +42,30 @@ struct MaskPart {
 // Fewer faces than this are rasterised on one thread: starting threads would cost more.
 constexpr size_t kLeastParallelFaces = 4096;
 
-// rasterConservativeSpans, with a narrow triangle's rows tested block by block, as rasterRows
-// does (the same spans; most triangles are narrow on blocks at a few texels per unit).
-template <class VisitSpan>
-void conservativeBlockSpans(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double margin, int width, int height,
-                            VisitSpan &&visitSpan) {
-    raster_detail::Setup s;
-    if (!raster_detail::setup(a, b, c, s))
-        return;
-    const raster_detail::ConservativeTest test(s, margin, width, height);
-    if (test.x0 > test.x1)
-        return;
-    if (test.x1 - test.x0 >= kNarrowRows) {
-        raster_detail::spans(s, test.reach, test.x0, test.x1, test.y0, test.y1, test, visitSpan);
-        return;
+// Records a chart's conservative span (y, xl..xr): kept in the band's span list when asked,
+// and folded into the mask's row and column extents.
+struct SpanRecorder {
+    bool keepSpans;
+    MaskPart &part;
+    size_t &spanCount;
+    std::vector<int> &rowLeft, &rowRight, &colBottom, &colTop;
+    void operator()(int y, int xl, int xr) const {
+        if (keepSpans) {
+            if (spanCount + 3 > part.spans.size())
+                part.spans.resize(2 * part.spans.size() + 3);
+            int16_t *at = part.spans.data() + spanCount;
+            at[0] = int16_t(y), at[1] = int16_t(xl), at[2] = int16_t(xr);
+            spanCount += 3;
+        }
+        rowLeft[size_t(y)] = std::min(rowLeft[size_t(y)], xl);
+        rowRight[size_t(y)] = std::max(rowRight[size_t(y)], xr);
+        int *bottom = colBottom.data(), *top = colTop.data();
+        for (int x = xl; x <= xr; ++x) {
+            bottom[x] = std::min(bottom[x], y);
+            top[x] = std::max(top[x], y);
+        }
     }
-    for (int y = test.y0; y <= test.y1; ++y) {
-        int xl = test.x0, xr = test.x1;
-        while (xl <= xr && !test(xl, y))
-            ++xl;
-        while (xr >= xl && !test(xr, y))
-            --xr;
-        if (xl <= xr)
-            visitSpan(y, xl, xr);
-    }
-}
+};
 
 // Chart c straight onto 2 x 2 blocks: the coarse mask that rasterising its texels (on the w x h
 // canvas, at `origin`), growing them by `padding` and coarsening would give. The texel mask's
@@ -77,8 +76,10 @@ void conservativeBlockSpans(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double mar
 // block grid with that margin in blocks. Its three half-plane tests may keep a block near a
 // sharp corner that the texel mask leaves out (a superset: still never overlapped by the bake).
 bool rasterizeBlocks(const AtlasCharts &charts, size_t c, double origin, int w, int h, int padding, int maxSide,
-                     bool keepSpans, ChartMask &m, MaskPart &part, size_t &spanCount, std::vector<int> &rowLeft,
-                     std::vector<int> &rowRight, std::vector<int> &colBottom, std::vector<int> &colTop) {
+                     ChartMask &m, const SpanRecorder &record) {
+    std::vector<int> &rowLeft = record.rowLeft, &rowRight = record.rowRight, &colBottom = record.colBottom,
+                     &colTop = record.colTop;
+    MaskPart &part = record.part;
     double lx = INFINITY, hx = -INFINITY, ly = INFINITY, hy = -INFINITY;
     for (size_t i = charts.chartFirstFace[c]; i < charts.chartFirstFace[c + 1]; ++i) {
         const glm::vec2 *uv = &charts.wedgeUv[3 * i];
@@ -112,24 +113,11 @@ bool rasterizeBlocks(const AtlasCharts &charts, size_t c, double origin, int w, 
     bool any = false;
     for (size_t i = charts.chartFirstFace[c]; i < charts.chartFirstFace[c + 1]; ++i) {
         const glm::vec2 *uv = &charts.wedgeUv[3 * i];
-        conservativeBlockSpans(
+        rasterConservativeSpans(
             (glm::dvec2(uv[0]) * m.scale + m.offset) * 0.5, (glm::dvec2(uv[1]) * m.scale + m.offset) * 0.5,
             (glm::dvec2(uv[2]) * m.scale + m.offset) * 0.5, margin, m.width, m.height, [&](int y, int xl, int xr) {
                 any = true;
-                if (keepSpans) {
-                    if (spanCount + 3 > part.spans.size())
-                        part.spans.resize(2 * part.spans.size() + 3);
-                    int16_t *at = part.spans.data() + spanCount;
-                    at[0] = int16_t(y), at[1] = int16_t(xl), at[2] = int16_t(xr);
-                    spanCount += 3;
-                }
-                rowLeft[size_t(y)] = std::min(rowLeft[size_t(y)], xl);
-                rowRight[size_t(y)] = std::max(rowRight[size_t(y)], xr);
-                int *bottom = colBottom.data(), *top = colTop.data();
-                for (int x = xl; x <= xr; ++x) {
-                    bottom[x] = std::min(bottom[x], y);
-                    top[x] = std::max(top[x], y);
-                }
+                record(y, xl, xr);
             });
     }
     if (!any) {  // the one texel and its padding: the whole mask
@@ -138,8 +126,8 @@ bool rasterizeBlocks(const AtlasCharts &charts, size_t c, double origin, int w, 
         std::fill(colBottom.begin(), colBottom.end(), 0);
         std::fill(colTop.begin(), colTop.end(), m.height - 1);
     }
-    if (keepSpans)
-        part.spanEnd.push_back(spanCount);
+    if (record.keepSpans)
+        part.spanEnd.push_back(record.spanCount);
     m.profile = part.profiles.size();
     part.profiles.resize(m.profile + 2 * size_t(m.width) + 2 * size_t(m.height));
     int16_t *bottom = part.profiles.data() + m.profile, *top = bottom + m.width;
@@ -186,6 +174,7 @@ bool rasterizeRange(const AtlasCharts &charts, size_t first, size_t end, double 
         if (rows < 1e9)
             part.spans.resize(3 * size_t(rows));
     }
+    const SpanRecorder record{keepSpans, part, spanCount, rowLeft, rowRight, colBottom, colTop};
     for (size_t c = first; c < end; ++c) {
         ChartMask &m = masks[c];
         m.scale = charts.isDegenerate(c) ? 1.0 : texelsPerUnit;
@@ -194,8 +183,7 @@ bool rasterizeRange(const AtlasCharts &charts, size_t first, size_t end, double 
             return false;
         const int w = int(std::ceil(size.x)) + 2 * border + 1, h = int(std::ceil(size.y)) + 2 * border + 1;
         if (onBlocks) {
-            if (!rasterizeBlocks(charts, c, origin, w, h, padding, maxSide, keepSpans, m, part, spanCount, rowLeft,
-                                 rowRight, colBottom, colTop))
+            if (!rasterizeBlocks(charts, c, origin, w, h, padding, maxSide, m, record))
                 return false;
             continue;
         }
@@ -206,23 +194,7 @@ bool rasterizeRange(const AtlasCharts &charts, size_t first, size_t end, double 
         for (size_t i = charts.chartFirstFace[c]; i < charts.chartFirstFace[c + 1]; ++i) {
             const glm::vec2 *uv = &charts.wedgeUv[3 * i];
             rasterConservativeSpans(glm::dvec2(uv[0]) * m.scale + origin, glm::dvec2(uv[1]) * m.scale + origin,
-                                    glm::dvec2(uv[2]) * m.scale + origin, kMaskMargin, w, h,
-                                    [&](int y, int xl, int xr) {
-                                        if (keepSpans) {
-                                            if (spanCount + 3 > part.spans.size())
-                                                part.spans.resize(2 * part.spans.size() + 3);
-                                            int16_t *at = part.spans.data() + spanCount;
-                                            at[0] = int16_t(y), at[1] = int16_t(xl), at[2] = int16_t(xr);
-                                            spanCount += 3;
-                                        }
-                                        rowLeft[size_t(y)] = std::min(rowLeft[size_t(y)], xl);
-                                        rowRight[size_t(y)] = std::max(rowRight[size_t(y)], xr);
-                                        int *bottom = colBottom.data(), *top = colTop.data();
-                                        for (int x = xl; x <= xr; ++x) {
-                                            bottom[x] = std::min(bottom[x], y);
-                                            top[x] = std::max(top[x], y);
-                                        }
-                                    });
+                                    glm::dvec2(uv[2]) * m.scale + origin, kMaskMargin, w, h, record);
         }
         int bx0 = w, bx1 = -1, by0 = h, by1 = -1;  // the footprint's box
         for (int y = 0; y < h; ++y)

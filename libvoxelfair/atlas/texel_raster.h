@@ -234,7 +234,24 @@ struct CentreTest {
         return true;
     }
 };
+
+// The texels x of [x0, x1] on row y that `inside` accepts, as xl..xr (empty: xl > xr), found by
+// testing from both ends. The same span as the row solver's: each test is monotonic in x along a
+// row (rounding keeps the order), so the texels it accepts are one interval. Cheaper than solving
+// the rows of a triangle under kNarrowRows texels wide.
+template <class Inside>
+inline void testedSpan(const Inside &inside, int x0, int x1, int y, int &xl, int &xr) {
+    xl = x0, xr = x1;
+    while (xl <= xr && !inside(xl, y))
+        ++xl;
+    while (xr >= xl && !inside(xr, y))
+        --xr;
+}
 }  // namespace raster_detail
+
+// Triangles whose conservative span is under this many columns have their rows found texel by
+// texel (raster_detail::testedSpan) instead of solved.
+constexpr int kNarrowRows = 4;
 
 // Calls visitSpan(y, x0, x1) for every row y with texels inside [0, width) x [0, height) whose
 // square, grown by `margin` on every side, meets the closed triangle: those are x0..x1. margin < 0
@@ -250,6 +267,15 @@ void rasterConservativeSpans(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double ma
     const raster_detail::ConservativeTest test(s, margin, width, height);
     if (test.x0 > test.x1)
         return;
+    if (test.x1 - test.x0 < kNarrowRows) {
+        for (int y = test.y0; y <= test.y1; ++y) {
+            int xl, xr;
+            raster_detail::testedSpan(test, test.x0, test.x1, y, xl, xr);
+            if (xl <= xr)
+                visitSpan(y, xl, xr);
+        }
+        return;
+    }
     raster_detail::spans(s, test.reach, test.x0, test.x1, test.y0, test.y1, test, visitSpan);
 }
 
@@ -289,10 +315,6 @@ void rasterCentres(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, int width, int heig
     });
 }
 
-// Triangles whose conservative texels span fewer columns than this are rasterised by testing
-// each texel of their bounding box (rasterRows).
-constexpr int kNarrowRows = 4;
-
 // Both at once, row by row, for a bake: visitRow(y, cl, cr, zl, zr) for every row with
 // conservative texels cl..cr (rasterConservativeSpans, margin > -0.5), of which zl..zr
 // (rasterCentres; zl > zr: none) hold their centre inside the triangle.
@@ -310,21 +332,12 @@ void rasterRows(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double margin, int wid
     const bool centres = centre.x0 <= centre.x1;
     if (conservative.x1 - conservative.x0 < kNarrowRows) {
         // A narrow triangle (most of them at a few texels per voxel): each row's texels tested one
-        // by one, cheaper than solving its rows. The same spans: each test is monotonic in x along
-        // a row (rounding keeps the order), so the texels it accepts are one interval, which the
-        // row solver finds exactly.
+        // by one (testedSpan: the same spans as solving its rows, for less).
         for (int y = std::max(conservative.y0, rowFrom); y <= std::min(conservative.y1, rowTo); ++y) {
-            int cl = conservative.x0, cr = conservative.x1, zl = 0, zr = -1;
-            while (cl <= cr && !conservative(cl, y))
-                ++cl;
-            while (cr >= cl && !conservative(cr, y))
-                --cr;
+            int cl, cr, zl = 0, zr = -1;
+            raster_detail::testedSpan(conservative, conservative.x0, conservative.x1, y, cl, cr);
             if (centres && y >= centre.y0 && y <= centre.y1) {
-                zl = centre.x0, zr = centre.x1;
-                while (zl <= zr && !centre(zl, y))
-                    ++zl;
-                while (zr >= zl && !centre(zr, y))
-                    --zr;
+                raster_detail::testedSpan(centre, centre.x0, centre.x1, y, zl, zr);
                 if (zl > zr)
                     zl = 0, zr = -1;
             }
