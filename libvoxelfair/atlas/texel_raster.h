@@ -109,6 +109,7 @@ struct RowSolver {
     int count = 0;
     int horizontal = -1;  // the edge with k = 0, if any
     int x0, x1, y0;
+    __attribute__((always_inline))
     RowSolver(const Setup &s, const double reach[3], const double inverse[3], int x0, int x1, int y0)
         : x0(x0), x1(x1), y0(y0) {
         const double c = std::max({std::abs(s.minX), std::abs(s.maxX), std::abs(s.minY), std::abs(s.maxY)}) + 2;
