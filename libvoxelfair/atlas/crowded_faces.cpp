@@ -2,8 +2,10 @@
 
 #include "atlas/seed_plane.h"
 #include "atlas/texel_raster.h"
+#include "base/parallel_bands.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -27,6 +29,9 @@ constexpr double kReach = 1.41421356237309505 + 0.01;
 // points move there, out of this search's sight. In a chart with other colours they are
 // separated whatever their neighbours.
 constexpr double kFloatThin = 0.01;
+
+// Fewer faces than this are searched on one thread: starting threads would cost more.
+constexpr size_t kLeastParallelFaces = 4096;
 
 // One chart's interior points in a uniform grid of cells at least 2 * kReach texels wide, so
 // the points within kReach of a query point lie in at most 4 cells. Cells grow with the chart's
@@ -129,48 +134,71 @@ CrowdedFaces separateCrowdedFaces(const AtlasMesh &mesh, AtlasCharts &charts, co
     };
 
     // Chart by chart, thinnest first: a thin face leaves its chart when an interior point of a
-    // face of another colour still in the chart lies within kReach of one of its own. Stops
-    // once over the budget.
+    // face of another colour still in the chart lies within kReach of one of its own. Charts are
+    // searched apart (on up to options.threads threads) and their counts summed in chart order, so the result is the same for any thread count; the sum
+    // stops once over the budget, where the chart-by-chart search stopped.
     const double budget = options.maxSeparatedShare * double(mesh.faceCount);
     std::vector<double> inradius(entries, 0.0);
     std::vector<uint8_t> separated(entries, 0);
-    std::vector<uint32_t> thin;
-    std::vector<ChartPointGrid::Point> chartPoints;
-    ChartPointGrid grid;
-    for (uint32_t c = 0; c < charts.chartCount(); ++c) {
-        if (charts.isDegenerate(c))
-            continue;
+    const size_t chartCount = charts.chartCount();
+    std::vector<uint32_t> thinCount(chartCount, 0), crowdedCount(chartCount, 0);
+    struct Scratch {
+        std::vector<uint32_t> thin;
+        std::vector<ChartPointGrid::Point> chartPoints;
+        ChartPointGrid grid;
+    };
+    auto search = [&](uint32_t c, Scratch &s) {
         const uint32_t first = charts.chartFirstFace[c], end = charts.chartFirstFace[c + 1];
         bool mixed = false;
         for (uint32_t i = first + 1; i < end && !mixed; ++i)
             mixed = colour(i) != colour(first);
-        thin.clear();
-        chartPoints.clear();
+        s.thin.clear();
+        s.chartPoints.clear();
         glm::dvec2 p[4] = {};
         for (uint32_t i = first; i < end; ++i) {
             inradius[i] = points(i, p);
             if (inradius[i] < kReach)
-                thin.push_back(i);
+                s.thin.push_back(i);
             if (mixed)
                 for (const glm::dvec2 &q : p)
-                    chartPoints.push_back({q, i});
+                    s.chartPoints.push_back({q, i});
         }
-        out.thinFaces += thin.size();
-        if (!mixed || thin.empty())
-            continue;
-        grid.build(glm::dvec2(charts.chartSize[c]) * d, chartPoints);
-        std::sort(thin.begin(), thin.end(), [&](uint32_t a, uint32_t b) {
+        thinCount[c] = uint32_t(s.thin.size());
+        if (!mixed || s.thin.empty())
+            return;
+        s.grid.build(glm::dvec2(charts.chartSize[c]) * d, s.chartPoints);
+        std::sort(s.thin.begin(), s.thin.end(), [&](uint32_t a, uint32_t b) {
             return inradius[a] != inradius[b] ? inradius[a] < inradius[b] : a < b;
         });
-        for (uint32_t i : thin) {
-            const ChartPointGrid::Point *own = &chartPoints[4 * size_t(i - first)];
+        for (uint32_t i : s.thin) {
+            const ChartPointGrid::Point *own = &s.chartPoints[4 * size_t(i - first)];
             separated[i] = inradius[i] < kFloatThin;
             for (int k = 0; k < 4 && !separated[i]; ++k)
-                separated[i] = grid.anyNear(own[k].p, [&](uint32_t other) {
+                separated[i] = s.grid.anyNear(own[k].p, [&](uint32_t other) {
                     return other != i && !separated[other] && colour(other) != colour(i);
                 });
-            if (separated[i] && double(++out.crowdedFaces) > budget)
-                return out;
+            crowdedCount[c] += separated[i];
+        }
+    };
+    // The threads take the charts in order; once the faces found crowded pass the budget no
+    // chart is started, so every chart before the one where the ordered sum passes it was searched.
+    const int workers = entries >= kLeastParallelFaces ? bandThreads(options.threads, chartCount) : 1;
+    std::vector<Scratch> scratch(static_cast<size_t>(workers));
+    std::atomic<size_t> found{0};
+    runWorkerBands(chartCount, workers, [&](size_t c, int worker) {
+        if (charts.isDegenerate(c) || double(found.load(std::memory_order_relaxed)) > budget)
+            return;
+        search(uint32_t(c), scratch[size_t(worker)]);
+        found += crowdedCount[c];
+    });
+    for (uint32_t c = 0; c < chartCount; ++c) {
+        out.thinFaces += thinCount[c];
+        const size_t before = out.crowdedFaces;
+        out.crowdedFaces += crowdedCount[c];
+        if (crowdedCount[c] > 0 && double(out.crowdedFaces) > budget) {
+            // Where the chart-by-chart search stopped: the first count over the budget.
+            out.crowdedFaces = budget >= double(before + 1) ? size_t(std::floor(budget)) + 1 : before + 1;
+            return out;
         }
     }
     if (out.crowdedFaces == 0)

@@ -28,7 +28,7 @@ TextureAtlas buildTextureAtlas(const AtlasMesh &mesh, const AtlasOptions &option
                        mesh.faceColours != nullptr && mesh.faceCount > 0;
     double separatedAt = 0;  // the density the charts were last separated for
     auto separate = [&](double density, double share) {
-        atlas.crowded = separateCrowdedFaces(mesh, atlas.charts, {density, share});
+        atlas.crowded = separateCrowdedFaces(mesh, atlas.charts, {density, share, options.pack.threads});
         separatedAt = density;
         return atlas.crowded.separatedFaces > 0;
     };

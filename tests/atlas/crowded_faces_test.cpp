@@ -126,6 +126,39 @@ TEST(CrowdedFaces, FixedTextureSizeIsSeparatedForTheDensityFound) {
     }
 }
 
+// The charts are searched on threads and summed in chart order: any thread count separates the
+// same faces into the same charts and counts the same, also where the search stops over the budget.
+TEST(CrowdedFaces, AnyThreadCountSeparatesTheSameFaces) {
+    const TestMesh mesh = paperFaired(voxelSphere(16));
+    ASSERT_GE(mesh.faceCount(), 4096u);  // enough faces to be searched on threads
+    const AtlasCharts start = computeCharts(mesh.view());
+    bool sawSeparated = false, sawOverBudget = false;
+    for (const CrowdedFaceOptions &o : {CrowdedFaceOptions{8.0, 0.1}, CrowdedFaceOptions{2.0, 0.1},
+                                        CrowdedFaceOptions{2.0, 0.02}, CrowdedFaceOptions{3.0, 0.5}}) {
+        AtlasCharts one = start;
+        CrowdedFaceOptions serial = o;
+        serial.threads = 1;
+        const CrowdedFaces expected = separateCrowdedFaces(mesh.view(), one, serial);
+        sawSeparated = sawSeparated || expected.separatedFaces > 0;
+        sawOverBudget = sawOverBudget || expected.overBudget();
+        for (int threads : {2, 3}) {
+            AtlasCharts many = start;
+            CrowdedFaceOptions parallel = o;
+            parallel.threads = threads;
+            const CrowdedFaces got = separateCrowdedFaces(mesh.view(), many, parallel);
+            EXPECT_EQ(got.thinFaces, expected.thinFaces) << o.texelsPerUnit << " " << threads;
+            EXPECT_EQ(got.crowdedFaces, expected.crowdedFaces) << o.texelsPerUnit << " " << threads;
+            EXPECT_EQ(got.separatedFaces, expected.separatedFaces) << o.texelsPerUnit << " " << threads;
+            EXPECT_EQ(many.chartFirstFace, one.chartFirstFace);
+            EXPECT_EQ(many.chartFaces, one.chartFaces);
+            EXPECT_EQ(many.faceChart, one.faceChart);
+            EXPECT_EQ(many.wedgeUv, one.wedgeUv);
+        }
+    }
+    EXPECT_TRUE(sawSeparated);
+    EXPECT_TRUE(sawOverBudget);
+}
+
 // Each separated face is a chart of its own, projected onto its own plane (stretch 1), and the
 // charts it left still hold all their other faces.
 TEST(CrowdedFaces, SeparatedFacesAreOneFaceChartsOnTheirOwnPlane) {
