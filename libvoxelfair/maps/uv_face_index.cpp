@@ -57,51 +57,43 @@ FaceBands faceBands(const NormalBakeMesh &mesh, int width, int height, int bandR
     const size_t bands = size_t((height + bandRows - 1) / bandRows);
     FaceBands out;
     out.start.assign(bands + 1, 0);
-    auto range = [&](size_t f, size_t &b0, size_t &b1) {
+    // Each face's bands [first, last] (first > last: none) and its UV box's left texel, once.
+    std::vector<uint32_t> first(mesh.faceCount), last(mesh.faceCount), column(size_t(width) + 2, 0);
+    std::vector<uint32_t> left(mesh.faceCount);
+    for (size_t f = 0; f < mesh.faceCount; ++f) {
         glm::dvec2 q[3];
         loadUv(mesh, f, width, height, q);
         const double lo = std::min({q[0].y, q[1].y, q[2].y}), hi = std::max({q[0].y, q[1].y, q[2].y});
-        if (!std::isfinite(lo) || !std::isfinite(hi) || hi < -1 || lo > height + 1)
-            return false;
-        b0 = size_t(std::clamp(int(std::floor(lo)) - 1, 0, height - 1) / bandRows);
-        b1 = size_t(std::clamp(int(std::ceil(hi)) + 1, 0, height - 1) / bandRows);
-        return true;
-    };
-    size_t b0 = 0, b1 = 0;
-    for (size_t f = 0; f < mesh.faceCount; ++f)
-        if (range(f, b0, b1))
-            for (size_t b = b0; b <= b1; ++b)
-                ++out.start[b + 1];
+        if (!std::isfinite(lo) || !std::isfinite(hi) || hi < -1 || lo > height + 1) {
+            first[f] = 1, last[f] = 0;
+            continue;
+        }
+        first[f] = uint32_t(std::clamp(int(std::floor(lo)) - 1, 0, height - 1) / bandRows);
+        last[f] = uint32_t(std::clamp(int(std::ceil(hi)) + 1, 0, height - 1) / bandRows);
+        for (uint32_t b = first[f]; b <= last[f]; ++b)
+            ++out.start[b + 1];
+        const glm::vec2 *uv = &mesh.wedgeUv[3 * f];
+        const float x = std::min({uv[0].x, uv[1].x, uv[2].x}) * float(width);
+        left[f] = std::isfinite(x) ? uint32_t(std::clamp(x, 0.0f, float(width))) : 0;
+        ++column[left[f] + 1];
+    }
     for (size_t b = 0; b < bands; ++b)
         out.start[b + 1] += out.start[b];
+    // Each band's faces from left to right (by their UV boxes' left texel, then index): a band
+    // sweeps its rows once, its texels and the source faces under them stay in cache. One stable
+    // counting sort of all faces on the left texel, then the faces dealt to their bands in that
+    // order: within a band, faces of the same column stay in index order.
+    for (size_t c = 1; c < column.size(); ++c)
+        column[c] += column[c - 1];
+    std::vector<uint32_t> sorted(column.back());
+    for (size_t f = 0; f < mesh.faceCount; ++f)
+        if (first[f] <= last[f])
+            sorted[column[left[f]]++] = uint32_t(f);
     out.faces.resize(out.start.back());
     std::vector<uint32_t> fill(out.start.begin(), out.start.end() - 1);
-    for (size_t f = 0; f < mesh.faceCount; ++f)
-        if (range(f, b0, b1))
-            for (size_t b = b0; b <= b1; ++b)
-                out.faces[fill[b]++] = uint32_t(f);
-    // Each band's faces from left to right (by their UV boxes' left texel, then index): a band
-    // sweeps its rows once, its texels and the source faces under them stay in cache.
-    // A counting sort on the left texel, stable: faces of the same column stay in index order.
-    std::vector<uint32_t> column(size_t(width) + 2), sorted;
-    std::vector<uint32_t> left;
-    for (size_t b = 0; b < bands; ++b) {
-        const uint32_t first = out.start[b], last = out.start[b + 1];
-        std::fill(column.begin(), column.end(), 0);
-        left.resize(last - first);
-        for (uint32_t i = first; i < last; ++i) {
-            const glm::vec2 *uv = &mesh.wedgeUv[3 * size_t(out.faces[i])];
-            const float x = std::min({uv[0].x, uv[1].x, uv[2].x}) * float(width);
-            left[i - first] = std::isfinite(x) ? uint32_t(std::clamp(x, 0.0f, float(width))) : 0;
-            ++column[left[i - first] + 1];
-        }
-        for (size_t c = 1; c < column.size(); ++c)
-            column[c] += column[c - 1];
-        sorted.resize(last - first);
-        for (uint32_t i = first; i < last; ++i)
-            sorted[column[left[i - first]]++] = out.faces[i];
-        std::copy(sorted.begin(), sorted.end(), out.faces.begin() + first);
-    }
+    for (const uint32_t f : sorted)
+        for (uint32_t b = first[f]; b <= last[f]; ++b)
+            out.faces[fill[b]++] = f;
     return out;
 }
 
