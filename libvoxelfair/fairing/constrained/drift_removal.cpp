@@ -135,11 +135,20 @@ VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds, int wid
         for (size_t slot = first; slot < last; ++slot)
             along[slot] = glm::dot(fit[slot / 4].n(int(slot % 4)), offset[slot].d);
     });
-    for (size_t v = 0; v < V; ++v) {
-        const uint32_t slot = rank[v];
-        weight[slot] = 1.0f / float(1 + start[v + 1] - start[v]);
-        if (!isFree(kind[v]) || !regular[slot / 4])
-            others[otherCount++] = uint32_t(v);
+    // (Vertex ranges split between the threads, each listing its others; joined in range order.)
+    const size_t vertexGrain = 4 * kBlockGrain, vertexChunks = (V + vertexGrain - 1) / vertexGrain;
+    std::vector<std::vector<uint32_t>> othersIn(vertexChunks);
+    threads.run(vertexChunks, [&](size_t chunk) {
+        for (size_t v = chunk * vertexGrain; v < std::min(V, (chunk + 1) * vertexGrain); ++v) {
+            const uint32_t slot = rank[v];
+            weight[slot] = 1.0f / float(1 + start[v + 1] - start[v]);
+            if (!isFree(kind[v]) || !regular[slot / 4])
+                othersIn[chunk].push_back(uint32_t(v));
+        }
+    });
+    for (const std::vector<uint32_t> &o : othersIn) {
+        std::copy(o.begin(), o.end(), others + otherCount);
+        otherCount += o.size();
     }
     // `count` rounds on `values` (by slot; `spare` as large), the result in `values`.
     // The same sums in the same order as over each vertex's corner list: a regular block's lists
@@ -147,9 +156,18 @@ VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds, int wid
     // Each round's slots are independent (Jacobi): the blocks and the other vertices split
     // between the threads, the same sums either way.
     auto average = [&](float *&values, float *&spare, int count) {
+        // (One run a round: the blocks' chunks, then the other vertices'.)
+        const size_t blockChunks = (blocks + kBlockGrain - 1) / kBlockGrain;
+        const size_t chunks = blockChunks + (otherCount + kBlockGrain - 1) / kBlockGrain;
         for (int round = 0; round < count; ++round) {
-            threads.forRanges(blocks, kBlockGrain, [&, values, spare](size_t firstBlock, size_t lastBlock) {
-                for (size_t block = firstBlock; block < lastBlock; ++block) {
+            threads.run(chunks, [&, values, spare](size_t chunk) {
+                if (chunk >= blockChunks) {
+                    const size_t first = (chunk - blockChunks) * kBlockGrain;
+                    for (size_t i = first; i < std::min(otherCount, first + kBlockGrain); ++i)
+                        spare[rank[others[i]]] = cornerListMean(s, values, weight, others[i]);
+                    return;
+                }
+                for (size_t block = chunk * kBlockGrain; block < std::min(blocks, (chunk + 1) * kBlockGrain); ++block) {
                     if (!regular[block])
                         continue;
 #ifdef VOXELFAIR_SSE2
@@ -175,10 +193,6 @@ VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds, int wid
                         spare[slot] = sum * weight[slot];
                     }
                 }
-            });
-            threads.forRanges(otherCount, kBlockGrain, [&, values, spare](size_t first, size_t last) {
-                for (size_t i = first; i < last; ++i)
-                    spare[rank[others[i]]] = cornerListMean(s, values, weight, others[i]);
             });
             std::swap(values, spare);
         }

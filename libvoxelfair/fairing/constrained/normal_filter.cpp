@@ -30,6 +30,10 @@
 namespace voxelfair::constrained {
 inline namespace VOXELFAIR_SIMD_VARIANT {
 
+namespace {
+constexpr size_t kGrain = 4096;  // polygons or vertices a thread takes at a time (a multiple of 4)
+}  // namespace
+
 template <bool kQuads>
 VOXELFAIR_NOINLINE void buildLevels(FairingState<kQuads> &s) {
     uint32_t *const twin = s.twin;
@@ -42,8 +46,11 @@ VOXELFAIR_NOINLINE void buildLevels(FairingState<kQuads> &s) {
     for (int level = 1; level < s.storedLevels; ++level) {
         const uint32_t *below = s.levelTable(level - 1);
         uint32_t *table = twin + size_t(level) * s.cornerCount;
-        for (uint32_t c = 0; c < s.cornerCount; ++c)
-            table[c] = s.doubled(below, c);
+        // (Corner ranges split between the threads: each corner's entry is its own.)
+        s.threads.forRanges(s.cornerCount, 4 * kGrain, [&](size_t first, size_t last) {
+            for (size_t c = first; c < last; ++c)
+                table[c] = s.doubled(below, uint32_t(c));
+        });
         if (level != 1)
             continue;
         // No walk of 2 quads (and so none further) across a notch edge: not from either of its
@@ -61,8 +68,6 @@ VOXELFAIR_NOINLINE void buildLevels(FairingState<kQuads> &s) {
 }
 
 namespace {
-
-constexpr size_t kGrain = 4096;  // polygons or vertices a thread takes at a time (a multiple of 4)
 
 #ifdef VOXELFAIR_SSE2
 // One level of filterNormals on the quads [first, last), a normal per register and four

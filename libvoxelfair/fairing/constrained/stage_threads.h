@@ -62,20 +62,11 @@ public:
                 chunk(c);
             return;
         }
-        // Published before the claim word: a thread whose claim of this run succeeds sees them.
-        using Job = std::remove_reference_t<Chunk>;
-        job_.store(const_cast<void *>(static_cast<const void *>(&chunk)), std::memory_order_relaxed);
-        call_.store([](void *job, size_t c) { (*static_cast<Job *>(job))(c); }, std::memory_order_relaxed);
-        done_.store(0, std::memory_order_relaxed);
-        const uint64_t generation = (claim_.load(std::memory_order_relaxed) >> 32) + 1;
-        {
-            std::lock_guard<std::mutex> lock(mutex_);  // a helper about to sleep sees the new run
-            claim_.store(generation << 32 | uint64_t(chunks), std::memory_order_release);
+        for (size_t first = 0; first < chunks; first += kMaxChunks) {  // (one run almost always)
+            const size_t count = std::min(chunks - first, kMaxChunks);
+            auto part = [&chunk, first](size_t c) { chunk(first + c); };
+            runPart(count, part);
         }
-        wake_.notify_all();
-        work(generation);
-        for (unsigned spins = 0; done_.load(std::memory_order_acquire) != chunks; ++spins)
-            pause(spins);
     }
     template <class Range>
     void forRanges(size_t n, size_t grain, Range &&range) {
@@ -92,25 +83,49 @@ private:
             std::this_thread::yield();
         }
     }
-    // Claims and runs chunks of run `generation` until none is left (the claim word holds the
-    // run's generation and how many chunks are still unclaimed).
-    void work(uint64_t generation) {
+    // Claims and runs chunks of run `generation` until none is left. The claim word holds the
+    // run's generation and the unclaimed chunks [front, back): the caller takes them from the
+    // front, the helpers from the back, so that each thread works on about the same part of the
+    // arrays from one run to the next (its cache holds them) wherever the two meet.
+    void work(uint64_t generation, bool fromFront) {
         void *const job = job_.load(std::memory_order_relaxed);
         void (*const call)(void *, size_t) = call_.load(std::memory_order_relaxed);
         uint64_t claim = claim_.load(std::memory_order_acquire);
-        while (claim >> 32 == generation && (claim & 0xffffffffu) != 0) {
-            if (!claim_.compare_exchange_weak(claim, claim - 1, std::memory_order_acq_rel))
+        for (;;) {
+            const uint64_t front = claim >> kFrontShift & kChunkMask, back = claim & kChunkMask;
+            if (claim >> kGenerationShift != generation || front >= back)
+                return;
+            const uint64_t claimed = fromFront ? claim + (uint64_t(1) << kFrontShift) : claim - 1;
+            if (!claim_.compare_exchange_weak(claim, claimed, std::memory_order_acq_rel))
                 continue;
-            call(job, size_t((claim & 0xffffffffu) - 1));
+            call(job, size_t(fromFront ? front : back - 1));
             done_.fetch_add(1, std::memory_order_release);
             claim = claim_.load(std::memory_order_acquire);
         }
+    }
+    template <class Chunk>
+    void runPart(size_t chunks, Chunk &chunk) {
+        // Published before the claim word: a thread whose claim of this run succeeds sees them.
+        using Job = std::remove_reference_t<Chunk>;
+        job_.store(const_cast<void *>(static_cast<const void *>(&chunk)), std::memory_order_relaxed);
+        call_.store([](void *job, size_t c) { (*static_cast<Job *>(job))(c); }, std::memory_order_relaxed);
+        done_.store(0, std::memory_order_relaxed);
+        const uint64_t generation = ((claim_.load(std::memory_order_relaxed) >> kGenerationShift) + 1) & kGenerationMask;
+        {
+            std::lock_guard<std::mutex> lock(mutex_);  // a helper about to sleep sees the new run
+            claim_.store(generation << kGenerationShift | uint64_t(chunks), std::memory_order_release);
+        }
+        wake_.notify_all();
+        work(generation, true);
+        for (unsigned spins = 0; done_.load(std::memory_order_acquire) != chunks; ++spins)
+            pause(spins);
     }
     void serve() {
         uint64_t seen = 0;
         for (;;) {
             auto fresh = [&] {
-                return claim_.load(std::memory_order_acquire) >> 32 != seen || stop_.load(std::memory_order_acquire);
+                return claim_.load(std::memory_order_acquire) >> kGenerationShift != seen ||
+                       stop_.load(std::memory_order_acquire);
             };
             for (unsigned spins = 0; !fresh() && spins < kSpins; ++spins)
                 pause(spins);
@@ -120,11 +135,16 @@ private:
             }
             if (stop_.load(std::memory_order_acquire))
                 return;
-            seen = claim_.load(std::memory_order_acquire) >> 32;
-            work(seen);
+            seen = claim_.load(std::memory_order_acquire) >> kGenerationShift;
+            work(seen, false);
         }
     }
 
+    // The claim word: generation (16 bits; a helper that sleeps through 65,536 runs at most misses
+    // one, which the caller then runs alone), front and back (24 bits each).
+    static constexpr int kGenerationShift = 48, kFrontShift = 24;
+    static constexpr uint64_t kGenerationMask = 0xffff, kChunkMask = 0xffffff;
+    static constexpr size_t kMaxChunks = kChunkMask;
     static constexpr unsigned kSpins = 1u << 11;  // some tens of microseconds of pause instructions
     const int count_;
     std::vector<std::thread> helpers_;
