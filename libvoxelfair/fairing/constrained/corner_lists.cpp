@@ -32,26 +32,51 @@ constexpr uint8_t kBitIndex[8] = {0, 1, 6, 2, 7, 5, 4, 3};
 
 template <bool kQuads>
 VOXELFAIR_NOINLINE void buildCorners(FairingState<kQuads> &s) {
-    // Counting sort by vertex: count into start[v + 2], then fill through start[v + 1], which
-    // leaves every start in place.
+    // Counting sort by vertex, the corners cut into one range a thread (parts): each part counts
+    // its corners at each vertex, a serial pass turns the counts into each part's first slot at
+    // each vertex (the parts' corners of a vertex follow one another in part order), and each
+    // part puts its corners in their slots: every vertex's corners in ascending order, as one
+    // pass would, for any number of parts.
     const Polygons<kQuads> k = s.k;
     const size_t V = s.V;
     const uint32_t cornerCount = s.cornerCount, *const indices = s.indices;
     const uint8_t *const live = s.live;
     uint32_t *const start = s.vertexStart, *const corners = s.vertexCorners, *const next = s.vertexNext,
                     *const previous = s.vertexPrevious;
-    std::fill(start, start + V + 2, 0u);
-    for (uint32_t c = 0; c < cornerCount; ++c)
-        start[indices[c] + 2] += live[k.polygonOf(c)];
-    for (size_t v = 1; v < V + 1; ++v)
-        start[v + 1] += start[v];
-    for (uint32_t c = 0; c < cornerCount; ++c)
-        if (live[k.polygonOf(c)]) {
-            const uint32_t slot = start[indices[c] + 1]++;
-            corners[slot] = c;
-            next[slot] = k.nextVertex(c);
-            previous[slot] = k.previousVertex(c);
+    uint32_t *const twin = s.twin;
+    const size_t parts = size_t(s.threads.count()), partCorners = (cornerCount + parts - 1) / parts;
+    uint32_t *const counts = s.scratch.template take<uint32_t>(parts * V);  // by part, then vertex
+    s.threads.run(parts, [&](size_t part) {
+        uint32_t *const count = counts + part * V;
+        std::fill(count, count + V, 0u);
+        const uint32_t first = uint32_t(std::min<size_t>(cornerCount, part * partCorners)),
+                       last = uint32_t(std::min<size_t>(cornerCount, (part + 1) * partCorners));
+        std::fill(twin + first, twin + last, kNone);  // (a tile writes the twins of its vertices' corners)
+        for (uint32_t c = first; c < last; ++c)
+            count[indices[c]] += live[k.polygonOf(c)];
+    });
+    uint32_t begin = 0;
+    for (size_t v = 0; v < V; ++v) {
+        start[v] = begin;
+        for (size_t part = 0; part < parts; ++part) {
+            const uint32_t count = counts[part * V + v];
+            counts[part * V + v] = begin;
+            begin += count;
         }
+    }
+    start[V] = start[V + 1] = begin;
+    s.threads.run(parts, [&](size_t part) {
+        uint32_t *const slotOf = counts + part * V;
+        const uint32_t first = uint32_t(std::min<size_t>(cornerCount, part * partCorners)),
+                       last = uint32_t(std::min<size_t>(cornerCount, (part + 1) * partCorners));
+        for (uint32_t c = first; c < last; ++c)
+            if (live[k.polygonOf(c)]) {
+                const uint32_t slot = slotOf[indices[c]]++;
+                corners[slot] = c;
+                next[slot] = k.nextVertex(c);
+                previous[slot] = k.previousVertex(c);
+            }
+    });
     std::fill(next + start[V], next + start[V] + 8, kNone);  // read past by the 8-lane loads
     std::fill(previous + start[V], previous + start[V] + 8, kNone);
 
@@ -60,12 +85,11 @@ VOXELFAIR_NOINLINE void buildCorners(FairingState<kQuads> &s) {
     // whose previous vertex is b; so a's own list decides. Tile by tile (the waves do not cross
     // tiles), the tiles split between the threads, each listing its creases and corners without
     // twin, joined in tile order: the lists of one pass in vertex order.
-    uint32_t *const twin = s.twin, *const wave = s.rank;
+    uint32_t *const wave = s.rank;
     const glm::vec3 *const normal = s.normal;
     const float creaseCos = std::cos(s.options.creaseAngleDegrees * 3.14159265f / 180.0f);
     const size_t tiles = (V + kTileSize - 1) / kTileSize;
     std::vector<std::vector<uint32_t>> creasesIn(tiles), boundaryIn(tiles);
-    std::fill(twin, twin + cornerCount, kNone);  // (a tile writes the twins of its vertices' corners)
     s.threads.run(tiles, [&](size_t tile) {
         const size_t tileStart = tile * kTileSize, tileEnd = std::min(V, tileStart + kTileSize);
         std::fill(wave + tileStart, wave + tileEnd, 0u);

@@ -64,6 +64,38 @@ inline float cornerListMean(const FairingState<kQuads> &s, const float *values, 
     return sum * weight[s.rank[v]];
 }
 
+// One Jacobi round on the regular blocks [firstBlock, lastBlock): each slot's value and its
+// neighbours' (the padded lists of sweep_layout.cpp, byte offsets of Offsets), summed in the
+// corner list's order, times its weight, into `spare`.
+inline void averageRegularBlocks(const float *values, float *spare, const float *weight, const uint32_t *neighbours,
+                                 const uint8_t *regular, size_t firstBlock, size_t lastBlock) {
+    for (size_t block = firstBlock; block < lastBlock; ++block) {
+        if (!regular[block])
+            continue;
+#ifdef VOXELFAIR_SSE2
+        // The four slots' sums side by side, each in the order below.
+        const uint32_t *n = neighbours + kRegularValence * 4 * block;
+        auto gather = [&](uint32_t i) {
+            return _mm_setr_ps(values[n[i] / sizeof(Offset)], values[n[kRegularValence + i] / sizeof(Offset)],
+                               values[n[2 * kRegularValence + i] / sizeof(Offset)],
+                               values[n[3 * kRegularValence + i] / sizeof(Offset)]);
+        };
+        __m128 sum = _mm_load_ps(values + 4 * block);
+        for (uint32_t i = 0; i < kRegularValence; ++i)
+            sum = _mm_add_ps(sum, gather(i));
+        _mm_store_ps(spare + 4 * block, _mm_mul_ps(sum, _mm_load_ps(weight + 4 * block)));
+        continue;
+#endif
+        for (size_t slot = 4 * block; slot < 4 * block + 4; ++slot) {
+            const uint32_t *n = neighbours + kRegularValence * slot;
+            float sum = values[slot];
+            for (uint32_t i = 0; i < kRegularValence; ++i)
+                sum += values[n[i] / sizeof(Offset)];
+            spare[slot] = sum * weight[slot];
+        }
+    }
+}
+
 }  // namespace
 
 // `rounds` rounds of the mean on `values` (the marks, by slot: 1 at the vertices `marked`, 0
@@ -167,32 +199,8 @@ VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds, int wid
                         spare[rank[others[i]]] = cornerListMean(s, values, weight, others[i]);
                     return;
                 }
-                for (size_t block = chunk * kBlockGrain; block < std::min(blocks, (chunk + 1) * kBlockGrain); ++block) {
-                    if (!regular[block])
-                        continue;
-#ifdef VOXELFAIR_SSE2
-                    // The four slots' sums side by side, each in the order below.
-                    const uint32_t *n = neighbours + kRegularValence * 4 * block;
-                    auto gather = [&](uint32_t i) {
-                        return _mm_setr_ps(values[n[i] / sizeof(Offset)],
-                                           values[n[kRegularValence + i] / sizeof(Offset)],
-                                           values[n[2 * kRegularValence + i] / sizeof(Offset)],
-                                           values[n[3 * kRegularValence + i] / sizeof(Offset)]);
-                    };
-                    __m128 sum = _mm_load_ps(values + 4 * block);
-                    for (uint32_t i = 0; i < kRegularValence; ++i)
-                        sum = _mm_add_ps(sum, gather(i));
-                    _mm_store_ps(spare + 4 * block, _mm_mul_ps(sum, _mm_load_ps(weight + 4 * block)));
-                    continue;
-#endif
-                    for (size_t slot = 4 * block; slot < 4 * block + 4; ++slot) {
-                        const uint32_t *n = neighbours + kRegularValence * slot;
-                        float sum = values[slot];
-                        for (uint32_t i = 0; i < kRegularValence; ++i)
-                            sum += values[n[i] / sizeof(Offset)];
-                        spare[slot] = sum * weight[slot];
-                    }
-                }
+                averageRegularBlocks(values, spare, weight, neighbours, regular, chunk * kBlockGrain,
+                                     std::min(blocks, (chunk + 1) * kBlockGrain));
             });
             std::swap(values, spare);
         }

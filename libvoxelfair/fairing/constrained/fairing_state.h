@@ -95,7 +95,8 @@ struct FairingState {
     // buildSlots; more if the waves need more padding than an eighth of the vertices).
     size_t scratchBytes() const {
         const size_t setup = Arena::bytes<uint32_t>(cornerCount + 8) + Arena::bytes<uint8_t>(cornerCount) +
-                             Arena::bytes<uint32_t>(cornerCount / 2 + 1);
+                             Arena::bytes<uint32_t>(cornerCount / 2 + 1) +
+                             Arena::bytes<uint32_t>(size_t(stageThreadCount(options.threads, V)) * V);
         return std::max(setup, passesBytes(V + V / 8 + 4));
     }
     size_t passesBytes(size_t freeSlots) const {

@@ -35,7 +35,7 @@ VOXELFAIR_NOINLINE bool findNormals(FairingState<kQuads> &s) {
     // (Vertex ranges, then polygon ranges, split between the threads: each writes its own
     // entries; the count, and the edge lengths' agreement below, do not depend on the order.)
     std::atomic<size_t> skippedCount{0};
-    s.threads.forRanges(V, kGrain, [&](size_t firstVertex, size_t lastVertex) {
+    s.threads.forRanges(V, kGrain, [&skippedCount, kind, input](size_t firstVertex, size_t lastVertex) {
         size_t skippedHere = 0;
         for (size_t v = firstVertex; v < lastVertex; ++v) {
 #ifdef VOXELFAIR_SSE2
@@ -60,7 +60,7 @@ VOXELFAIR_NOINLINE bool findNormals(FairingState<kQuads> &s) {
     // Each range's edges: all of one length (oneLength), and that length (-1: none seen).
     const size_t ranges = (P + kGrain - 1) / kGrain;
     std::vector<std::pair<uint8_t, float>> rangeLengths(ranges, {uint8_t(1), -1.0f});
-    s.threads.run(ranges, [&](size_t range) {
+    s.threads.run(ranges, [&rangeLengths, k, kind, indices, normal, live, at, skipped, P](size_t range) {
         float edgeLength2 = -1.0f;  // -1: none seen yet
         bool oneLength = true;
         const size_t firstPolygon = range * kGrain, lastPolygon = std::min(P, firstPolygon + kGrain);
