@@ -32,7 +32,7 @@ constexpr uint8_t kBitIndex[8] = {0, 1, 6, 2, 7, 5, 4, 3};
 
 template <bool kQuads>
 VOXELFAIR_NOINLINE void buildCorners(FairingState<kQuads> &s) {
-    // Counting sort by vertex, the corners cut into one range a thread (parts): each part counts
+    // Counting sort by vertex, the corners cut into ranges (parts): each part counts
     // its corners at each vertex, a serial pass turns the counts into each part's first slot at
     // each vertex (the parts' corners of a vertex follow one another in part order), and each
     // part puts its corners in their slots: every vertex's corners in ascending order, as one
@@ -44,7 +44,7 @@ VOXELFAIR_NOINLINE void buildCorners(FairingState<kQuads> &s) {
     uint32_t *const start = s.vertexStart, *const corners = s.vertexCorners, *const next = s.vertexNext,
                     *const previous = s.vertexPrevious;
     uint32_t *const twin = s.twin;
-    const size_t parts = size_t(s.threads.count()), partCorners = (cornerCount + parts - 1) / parts;
+    const size_t parts = cornerParts(s.threads.count()), partCorners = (cornerCount + parts - 1) / parts;
     uint32_t *const counts = s.scratch.template take<uint32_t>(parts * V);  // by part, then vertex
     s.threads.run(parts, [&](size_t part) {
         uint32_t *const count = counts + part * V;

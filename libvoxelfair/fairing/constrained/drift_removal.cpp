@@ -25,7 +25,8 @@
 //
 // Contract (removeDrift; reads offset, fit (the last pass's normals, which equal vertexNormal's
 // bits, slot by slot), vertexNormal, kind, the corner lists and the slots; writes offset[.].d of
-// the free vertices, not those held on planes): each vertex's n . d (0 for those that do not
+// the free vertices, not those held on planes; turns slotNeighbours' byte offsets into slots, for
+// the sweeps are done): each vertex's n . d (0 for those that do not
 // move), by slot, is averaged with its neighbours' (Jacobi, over slots: regular blocks read their
 // padded neighbour lists, the rest their corner lists; the same sums in the same order either way,
 // four regular slots at once in SSE); the blend above is taken off along n, clamped into the cell
@@ -65,7 +66,7 @@ inline float cornerListMean(const FairingState<kQuads> &s, const float *values, 
 }
 
 // One Jacobi round on the regular blocks [firstBlock, lastBlock): each slot's value and its
-// neighbours' (the padded lists of sweep_layout.cpp, byte offsets of Offsets), summed in the
+// neighbours' (the padded lists of sweep_layout.cpp, turned into slots), summed in the
 // corner list's order, times its weight, into `spare`.
 inline void averageRegularBlocks(const float *values, float *spare, const float *weight, const uint32_t *neighbours,
                                  const uint8_t *regular, size_t firstBlock, size_t lastBlock) {
@@ -76,9 +77,8 @@ inline void averageRegularBlocks(const float *values, float *spare, const float 
         // The four slots' sums side by side, each in the order below.
         const uint32_t *n = neighbours + kRegularValence * 4 * block;
         auto gather = [&](uint32_t i) {
-            return _mm_setr_ps(values[n[i] / sizeof(Offset)], values[n[kRegularValence + i] / sizeof(Offset)],
-                               values[n[2 * kRegularValence + i] / sizeof(Offset)],
-                               values[n[3 * kRegularValence + i] / sizeof(Offset)]);
+            return _mm_setr_ps(values[n[i]], values[n[kRegularValence + i]], values[n[2 * kRegularValence + i]],
+                               values[n[3 * kRegularValence + i]]);
         };
         __m128 sum = _mm_load_ps(values + 4 * block);
         for (uint32_t i = 0; i < kRegularValence; ++i)
@@ -90,7 +90,7 @@ inline void averageRegularBlocks(const float *values, float *spare, const float 
             const uint32_t *n = neighbours + kRegularValence * slot;
             float sum = values[slot];
             for (uint32_t i = 0; i < kRegularValence; ++i)
-                sum += values[n[i] / sizeof(Offset)];
+                sum += values[n[i]];
             spare[slot] = sum * weight[slot];
         }
     }
@@ -146,7 +146,8 @@ template <bool kQuads>
 VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds, int wideRounds) {
     const size_t V = s.V, slots = s.zeroSlot + 1, blocks = s.freeSlots / 4;
     const uint32_t *const start = s.vertexStart, *const next = s.vertexNext, *const rank = s.rank;
-    const uint32_t *const vertexAt = s.vertexAt, *const neighbours = s.slotNeighbours;
+    const uint32_t *const vertexAt = s.vertexAt;
+    uint32_t *const neighbours = s.slotNeighbours;
     const uint8_t *const regular = s.regularBlock;
     const VertexKind *const kind = s.kind;
     Offset *const offset = s.offset;
@@ -163,9 +164,13 @@ VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds, int wid
     // (A free vertex's normal is its lane's in `fit`, slot by slot; empty slots' are 0.)
     const FitBlock *const fit = s.fit;
     StageThreads &threads = s.threads;
+    // (The sweeps are done: their byte offsets in slotNeighbours become slots, one instruction less
+    // a neighbour in the rounds.)
     threads.forRanges(s.freeSlots, 4 * kBlockGrain, [&](size_t first, size_t last) {
         for (size_t slot = first; slot < last; ++slot)
             along[slot] = glm::dot(fit[slot / 4].n(int(slot % 4)), offset[slot].d);
+        for (size_t i = kRegularValence * first; i < kRegularValence * last; ++i)
+            neighbours[i] /= uint32_t(sizeof(Offset));
     });
     // (Vertex ranges split between the threads, each listing its others; joined in range order.)
     const size_t vertexGrain = 4 * kBlockGrain, vertexChunks = (V + vertexGrain - 1) / vertexGrain;

@@ -67,6 +67,10 @@ inline int stageThreadCount(int requested, size_t vertexCount) {
     return int(std::clamp<size_t>(std::min(wanted, vertexCount / kVerticesPerThread), 1, 64));
 }
 
+// The corner ranges of buildCorners' counting sort: two a thread, so that a thread that is
+// descheduled holds up no more than a quarter of the work with two (corner_lists.cpp).
+inline size_t cornerParts(int threads) { return threads > 1 ? 2 * size_t(threads) : 1; }
+
 // A vertex normal, padded to 16 bytes for whole-register loads and stores.
 struct alignas(16) VertexNormal {
     glm::vec3 n;
@@ -96,7 +100,7 @@ struct FairingState {
     size_t scratchBytes() const {
         const size_t setup = Arena::bytes<uint32_t>(cornerCount + 8) + Arena::bytes<uint8_t>(cornerCount) +
                              Arena::bytes<uint32_t>(cornerCount / 2 + 1) +
-                             Arena::bytes<uint32_t>(size_t(stageThreadCount(options.threads, V)) * V);
+                             Arena::bytes<uint32_t>(cornerParts(stageThreadCount(options.threads, V)) * V);
         return std::max(setup, passesBytes(V + V / 8 + 4));
     }
     size_t passesBytes(size_t freeSlots) const {
