@@ -186,18 +186,26 @@ classifyEdges(const Polygons<kQuads> &k, const uint32_t *twin, const glm::vec3 *
     };
     // A straight edge whose faces end, both ways, on staircase steps is a flat run of a rounded
     // part (a circle of radius 3 voxelizes with a 5-voxel straight corner).
-    std::vector<uint32_t> demoted;
-    if (options.featureReach > 0)
-        for (const Candidate &candidate : candidates) {
-            const uint32_t c = candidate.corner;
-            if (candidate.thin)
-                continue;
-            const uint32_t a = walk(c, options.featureReach).corner, b = walk(twin[c], options.featureReach).corner;
-            if (a != kNone && b != kNone && !(flags[a] & kSharp) && !(flags[b] & kSharp))
-                demoted.push_back(c);
-        }
-    for (uint32_t c : demoted)
-        unsharpen(c);
+    // (The walks read the flags, which change only after them: candidates in ranges split between
+    // the threads, each listing its demoted edges.)
+    if (options.featureReach > 0) {
+        const size_t candidateChunks = (candidates.size() + kCreaseGrain - 1) / kCreaseGrain;
+        std::vector<std::vector<uint32_t>> demotedIn(candidateChunks);
+        threads.run(candidateChunks, [&](size_t chunk) {
+            for (size_t i = chunk * kCreaseGrain; i < std::min(candidates.size(), (chunk + 1) * kCreaseGrain); ++i) {
+                const uint32_t c = candidates[i].corner;
+                if (candidates[i].thin)
+                    continue;
+                const uint32_t a = walk(c, options.featureReach).corner,
+                               b = walk(twin[c], options.featureReach).corner;
+                if (a != kNone && b != kNone && !(flags[a] & kSharp) && !(flags[b] & kSharp))
+                    demotedIn[chunk].push_back(c);
+            }
+        });
+        for (const std::vector<uint32_t> &demoted : demotedIn)
+            for (uint32_t c : demoted)
+                unsharpen(c);
+    }
     // A single sharp edge touching no other is a corner of a small pole terrace, not a feature.
     std::vector<uint8_t> degree(vertexCount, 0);
     for (const Candidate &candidate : candidates)

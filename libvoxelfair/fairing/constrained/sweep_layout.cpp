@@ -27,50 +27,58 @@ template <bool kQuads>
 VOXELFAIR_NOINLINE void buildSlots(FairingState<kQuads> &s) {
     const size_t V = s.V;
     const VertexKind *const kind = s.kind;
-    uint32_t *const rank = s.rank, *const wave = s.rank;  // a tile's waves are copied before its ranks are set
-    // The temporaries are dead: step 3's arrays go in their place, first the slots' vertices
-    // (room for each wave's padding: at most 3 empty slots per wave).
+    uint32_t *const rank = s.rank, *const wave = s.rank;  // a vertex's wave is read before its rank is set
+    // The temporaries are dead: step 3's arrays go in their place, first the slots' vertices.
     s.scratch.rewind({0, 0});
-    size_t room = 0;
-    for (size_t tileStart = 0; tileStart < V; tileStart += kTileSize) {
+    // Tile by tile, the tiles split between the threads: first each tile's waves' first slots
+    // (from the tile's first) and its count of other vertices, then, from the tiles' first slots
+    // and first other slots, each vertex's slot.
+    const size_t tiles = (V + kTileSize - 1) / kTileSize;
+    std::vector<std::vector<uint32_t>> waveStartIn(tiles);
+    std::vector<size_t> tileSlot(tiles + 1, 0), tileOther(tiles + 1, 0);
+    s.threads.run(tiles, [&](size_t tile) {
+        const size_t tileStart = tile * kTileSize, tileEnd = std::min(V, tileStart + kTileSize);
         uint32_t waves = 0;
-        for (size_t v = tileStart; v < std::min(V, tileStart + kTileSize); ++v)
-            if (isFree(kind[v])) {
-                waves = std::max(waves, wave[v] + 1);
-                ++room;
-            }
-        room += 3 * size_t(waves);
-    }
-    uint32_t *const vertexAt = s.vertexAt = s.scratch.template take<uint32_t>(room);
-    std::vector<uint32_t> tileWave, waveStart;
-    size_t slots = 0;
-    for (size_t tileStart = 0; tileStart < V; tileStart += kTileSize) {
-        const size_t tileEnd = std::min(V, tileStart + kTileSize);
-        tileWave.assign(wave + tileStart, wave + tileEnd);
-        uint32_t waves = 0;
-        for (size_t v = tileStart; v < tileEnd; ++v)
+        size_t others = 0;
+        for (size_t v = tileStart; v < tileEnd; ++v) {
             if (isFree(kind[v]))
-                waves = std::max(waves, tileWave[v - tileStart] + 1);
+                waves = std::max(waves, wave[v] + 1);
+            else
+                ++others;
+        }
+        std::vector<uint32_t> &waveStart = waveStartIn[tile];
         waveStart.assign(waves + 1, 0);
         for (size_t v = tileStart; v < tileEnd; ++v)
             if (isFree(kind[v]))
-                ++waveStart[tileWave[v - tileStart] + 1];
+                ++waveStart[wave[v] + 1];
         for (uint32_t w = 0; w < waves; ++w)
             waveStart[w + 1] = waveStart[w] + ((waveStart[w + 1] + 3) & ~3u);  // whole blocks
-        std::fill(vertexAt + slots, vertexAt + slots + waveStart[waves], kNone);
-        for (size_t v = tileStart; v < tileEnd; ++v)
+        tileSlot[tile + 1] = waveStart[waves];
+        tileOther[tile + 1] = others;
+    });
+    for (size_t tile = 0; tile < tiles; ++tile) {
+        tileSlot[tile + 1] += tileSlot[tile];
+        tileOther[tile + 1] += tileOther[tile];
+    }
+    const size_t freeSlots = s.freeSlots = tileSlot[tiles];
+    uint32_t *const vertexAt = s.vertexAt = s.scratch.template take<uint32_t>(freeSlots);
+    s.threads.run(tiles, [&](size_t tile) {
+        const size_t tileStart = tile * kTileSize, tileEnd = std::min(V, tileStart + kTileSize);
+        std::vector<uint32_t> &waveStart = waveStartIn[tile];
+        const size_t slots = tileSlot[tile];
+        uint32_t other = uint32_t(freeSlots + tileOther[tile]);
+        std::fill(vertexAt + slots, vertexAt + tileSlot[tile + 1], kNone);
+        for (size_t v = tileStart; v < tileEnd; ++v) {
             if (isFree(kind[v])) {
-                const uint32_t slot = uint32_t(slots + waveStart[tileWave[v - tileStart]]++);
+                const uint32_t slot = uint32_t(slots + waveStart[wave[v]]++);
                 vertexAt[slot] = uint32_t(v);
                 rank[v] = slot;
+            } else {
+                rank[v] = other++;
             }
-        slots += waveStart[waves];
-    }
-    const size_t freeSlots = s.freeSlots = slots;
-    uint32_t other = uint32_t(freeSlots);
-    for (size_t v = 0; v < V; ++v)
-        if (!isFree(kind[v]))
-            rank[v] = other++;
+        }
+    });
+    const uint32_t other = uint32_t(freeSlots + tileOther[tiles]);
     const uint32_t zeroSlot = other;
     s.zeroSlot = zeroSlot;
 
@@ -81,7 +89,10 @@ VOXELFAIR_NOINLINE void buildSlots(FairingState<kQuads> &s) {
     std::fill(s.turning, s.turning + V, uint8_t(0));
     s.slotNeighbours = s.scratch.template take<uint32_t>(kRegularValence * freeSlots);
     s.offset = s.scratch.template take<Offset>(zeroSlot + 1);
-    std::fill(s.offset, s.offset + zeroSlot + 1, Offset{0.0f, glm::vec3(0.0f)});
+    Offset *const offset = s.offset;
+    s.threads.forRanges(zeroSlot + 1, 4 * kTileSize, [offset](size_t first, size_t last) {
+        std::fill(offset + first, offset + last, Offset{0.0f, glm::vec3(0.0f)});
+    });
     s.fit = s.scratch.template take<FitBlock>(freeSlots / 4);
     s.regularBlock = s.scratch.template take<uint8_t>(freeSlots / 4);
     // (moveFreeBlock reads slotNeighbours as byte offsets, which must fit 32 bits: beyond 2^28
