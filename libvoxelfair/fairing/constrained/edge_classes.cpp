@@ -196,8 +196,7 @@ classifyEdges(const Polygons<kQuads> &k, const uint32_t *twin, const glm::vec3 *
                 const uint32_t c = candidates[i].corner;
                 if (candidates[i].thin)
                     continue;
-                const uint32_t a = walk(c, options.featureReach).corner,
-                               b = walk(twin[c], options.featureReach).corner;
+                const uint32_t a = walk(c, options.featureReach).corner, b = walk(twin[c], options.featureReach).corner;
                 if (a != kNone && b != kNone && !(flags[a] & kSharp) && !(flags[b] & kSharp))
                     demotedIn[chunk].push_back(c);
             }

@@ -110,7 +110,8 @@ private:
         job_.store(const_cast<void *>(static_cast<const void *>(&chunk)), std::memory_order_relaxed);
         call_.store([](void *job, size_t c) { (*static_cast<Job *>(job))(c); }, std::memory_order_relaxed);
         done_.store(0, std::memory_order_relaxed);
-        const uint64_t generation = ((claim_.load(std::memory_order_relaxed) >> kGenerationShift) + 1) & kGenerationMask;
+        const uint64_t generation =
+            ((claim_.load(std::memory_order_relaxed) >> kGenerationShift) + 1) & kGenerationMask;
         {
             std::lock_guard<std::mutex> lock(mutex_);  // a helper about to sleep sees the new run
             claim_.store(generation << kGenerationShift | uint64_t(chunks), std::memory_order_release);
