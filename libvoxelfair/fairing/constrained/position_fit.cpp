@@ -59,35 +59,39 @@ VOXELFAIR_NOINLINE void fitFreeVertices(FairingState<kQuads> &s) {
     // Vertex by vertex, each writing its own slot's lane, tile by tile split between the threads:
     // a block's slots are of one tile's vertices (sweep_layout.cpp), so a tile's vertices alone
     // write its blocks' flags.
-    s.threads.forRanges(s.V, kTileSize, [&](size_t firstVertex, size_t lastVertex) {
-        bool turns = false;
-        for (size_t v = firstVertex; v < lastVertex; ++v) {
-            if (!isFree(kind[v]))
-                continue;
-            float sum2 = 0.0f, base = 0.0f, minE2 = 4.0f;
-            bool allUsed = true;
+    s.threads.forRanges(s.V, kTileSize,
+                        [&, kind, vertexNormal, input, rank, start, next, fit, regularBlock, turning,
+                         turned](size_t firstVertex, size_t lastVertex) {
+                            bool turns = false;
+                            for (size_t v = firstVertex; v < lastVertex; ++v) {
+                                if (!isFree(kind[v]))
+                                    continue;
+                                float sum2 = 0.0f, base = 0.0f, minE2 = 4.0f;
+                                bool allUsed = true;
 #ifdef VOXELFAIR_SSE2
-            // (Vertex normals are 16-byte blocks with a zero fourth float: whole loads.)
-            auto normalOf = [vertexNormal](uint32_t u) { return _mm_load_ps(&vertexNormal[u].n.x); };
-            const __m128 n = normalOf(uint32_t(v)), x = load3(input[v]);
-            __m128 sumS = _mm_setzero_ps(), products = sumS;  // base: the sum of products' lanes
-            for (uint32_t i = start[v]; i < start[v + 1]; ++i) {
-                const uint32_t u = next[i];
-                const __m128 e = _mm_add_ps(n, isFree(kind[u]) ? normalOf(u) : n);
-                const float e2 = dot3(e, e);
-                minE2 = std::min(minE2, e2);
-                if (!(e2 > 2.0f)) {
-                    allUsed = false;
-                    continue;
-                }
-                sum2 += e2;
-                sumS = _mm_add_ps(sumS, e);
-                products = _mm_add_ps(products, _mm_mul_ps(e, _mm_sub_ps(load3(input[u]), x)));
-            }
-            base = dot3(products, _mm_set1_ps(1.0f));
-            alignas(16) float nOut[4], sOut[4];
-            _mm_store_ps(nOut, n);
-            _mm_store_ps(sOut, sumS);
+                                // (Vertex normals are 16-byte blocks with a zero fourth float: whole loads.)
+                                auto normalOf = [vertexNormal](uint32_t u) {
+                                    return _mm_load_ps(&vertexNormal[u].n.x);
+                                };
+                                const __m128 n = normalOf(uint32_t(v)), x = load3(input[v]);
+                                __m128 sumS = _mm_setzero_ps(), products = sumS;  // base: the sum of products' lanes
+                                for (uint32_t i = start[v]; i < start[v + 1]; ++i) {
+                                    const uint32_t u = next[i];
+                                    const __m128 e = _mm_add_ps(n, isFree(kind[u]) ? normalOf(u) : n);
+                                    const float e2 = dot3(e, e);
+                                    minE2 = std::min(minE2, e2);
+                                    if (!(e2 > 2.0f)) {
+                                        allUsed = false;
+                                        continue;
+                                    }
+                                    sum2 += e2;
+                                    sumS = _mm_add_ps(sumS, e);
+                                    products = _mm_add_ps(products, _mm_mul_ps(e, _mm_sub_ps(load3(input[u]), x)));
+                                }
+                                base = dot3(products, _mm_set1_ps(1.0f));
+                                alignas(16) float nOut[4], sOut[4];
+                                _mm_store_ps(nOut, n);
+                                _mm_store_ps(sOut, sumS);
 #else
         const glm::vec3 n = vertexNormal[v].n;
         glm::vec3 sumS(0.0f);
@@ -106,27 +110,27 @@ VOXELFAIR_NOINLINE void fitFreeVertices(FairingState<kQuads> &s) {
         }
         const float nOut[3] = {n.x, n.y, n.z}, sOut[3] = {sumS.x, sumS.y, sumS.z};
 #endif
-            const uint32_t slot = rank[v];
-            turning[v] = minE2 < turned;
-            turns = turns || minE2 < turned;
-            if (!allUsed)
-                kind[v] = VertexKind::FreeIrregular;
-            if (kind[v] != VertexKind::Free)
-                regularBlock[slot / 4] = 0;
-            FitBlock &f = fit[slot / 4];
-            const int lane = int(slot % 4);
-            f.stepScale[lane] = sum2 > 0.0f ? 2.0f / sum2 : 0.0f;
-            f.nx[lane] = nOut[0];
-            f.ny[lane] = nOut[1];
-            f.nz[lane] = nOut[2];
-            f.base[lane] = base;
-            f.sx[lane] = sOut[0];
-            f.sy[lane] = sOut[1];
-            f.sz[lane] = sOut[2];
-        }
-        if (turns)
-            anyTurning.store(true, std::memory_order_relaxed);
-    });
+                                const uint32_t slot = rank[v];
+                                turning[v] = minE2 < turned;
+                                turns = turns || minE2 < turned;
+                                if (!allUsed)
+                                    kind[v] = VertexKind::FreeIrregular;
+                                if (kind[v] != VertexKind::Free)
+                                    regularBlock[slot / 4] = 0;
+                                FitBlock &f = fit[slot / 4];
+                                const int lane = int(slot % 4);
+                                f.stepScale[lane] = sum2 > 0.0f ? 2.0f / sum2 : 0.0f;
+                                f.nx[lane] = nOut[0];
+                                f.ny[lane] = nOut[1];
+                                f.nz[lane] = nOut[2];
+                                f.base[lane] = base;
+                                f.sx[lane] = sOut[0];
+                                f.sy[lane] = sOut[1];
+                                f.sz[lane] = sOut[2];
+                            }
+                            if (turns)
+                                anyTurning.store(true, std::memory_order_relaxed);
+                        });
     s.anyTurning = anyTurning.load();
     // n . d with this pass's normals, slot by slot.
     Offset *const offset = s.offset;
