@@ -32,6 +32,7 @@
 #include "fairing/constrained/fairing_state.h"
 
 #include <algorithm>
+#include <atomic>
 #include <utility>
 
 #include <glm/geometric.hpp>
@@ -234,31 +235,45 @@ VOXELFAIR_NOINLINE void findVertexKinds(FairingState<kQuads> &s) {
         for (uint32_t c : *edges)
             for (uint32_t v : {s.indices[c], k.nextVertex(c)})
                 sharpDegree[v] = uint8_t(std::min(sharpDegree[v] + 1, 3));
-    size_t pinned = 0;
-    for (size_t v = 0; v < V; ++v) {
-        if (kind[v] == VertexKind::Skipped || (!anySharp && !s.selected && start[v] < start[v + 1]))
-            continue;  // (the common case: free)
-        const uint8_t degree = anySharp ? sharpDegree[v] : 0;
-        if ((s.selected && !s.selected[v]) || start[v] == start[v + 1] || (degree != 0 && degree != 2)) {
-            kind[v] = VertexKind::Pinned;
-            ++pinned;
-        } else if (degree == 2) {
-            kind[v] = VertexKind::EdgeLine;
-            s.lineVertices.push_back(uint32_t(v));
+    // (Vertex ranges split between the threads: each sets its vertices' kinds and lists its edge
+    // line vertices, joined in range order; the second loop only turns Free into FreeIrregular,
+    // which no vertex reads.)
+    const size_t grain = 4 * kCreaseGrain, chunks = (V + grain - 1) / grain;
+    std::vector<std::vector<uint32_t>> linesIn(chunks);
+    std::atomic<size_t> pinnedCount{0};
+    const uint8_t *const selected = s.selected;
+    s.threads.run(chunks, [&](size_t chunk) {
+        size_t pinned = 0;
+        for (size_t v = chunk * grain; v < std::min(V, (chunk + 1) * grain); ++v) {
+            if (kind[v] == VertexKind::Skipped || (!anySharp && !selected && start[v] < start[v + 1]))
+                continue;  // (the common case: free)
+            const uint8_t degree = anySharp ? sharpDegree[v] : 0;
+            if ((selected && !selected[v]) || start[v] == start[v + 1] || (degree != 0 && degree != 2)) {
+                kind[v] = VertexKind::Pinned;
+                ++pinned;
+            } else if (degree == 2) {
+                kind[v] = VertexKind::EdgeLine;
+                linesIn[chunk].push_back(uint32_t(v));
+            }
         }
-    }
-    s.report.pinnedVertices = pinned;
+        pinnedCount += pinned;
+    });
+    for (const std::vector<uint32_t> &lines : linesIn)
+        s.lineVertices.insert(s.lineVertices.end(), lines.begin(), lines.end());
+    s.report.pinnedVertices = pinnedCount.load();
     s.report.edgeLineVertices = s.lineVertices.size();
     const bool anyLine = !s.lineVertices.empty();
-    for (size_t v = 0; v < V; ++v) {
-        if (kind[v] != VertexKind::Free)
-            continue;
-        bool regular = start[v + 1] - start[v] <= kRegularValence;
-        for (uint32_t i = start[v]; anyLine && regular && i < start[v + 1]; ++i)
-            regular = kind[next[i]] != VertexKind::EdgeLine;
-        if (!regular)
-            kind[v] = VertexKind::FreeIrregular;
-    }
+    s.threads.forRanges(V, grain, [&](size_t first, size_t last) {
+        for (size_t v = first; v < last; ++v) {
+            if (kind[v] != VertexKind::Free)
+                continue;
+            bool regular = start[v + 1] - start[v] <= kRegularValence;
+            for (uint32_t i = start[v]; anyLine && regular && i < start[v + 1]; ++i)
+                regular = kind[next[i]] != VertexKind::EdgeLine;
+            if (!regular)
+                kind[v] = VertexKind::FreeIrregular;
+        }
+    });
     s.linePolygonStart.push_back(0);
     for (uint32_t v : s.lineVertices) {
         for (uint32_t i = start[v]; i < start[v + 1]; ++i)
