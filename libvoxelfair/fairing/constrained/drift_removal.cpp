@@ -155,9 +155,11 @@ VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds, int wid
     // (Jacobi). Empty slots and the zero slot have weight 0 and stay 0.
     float *along = s.scratch.template take<float>(slots), *smooth = s.scratch.template take<float>(slots);
     float *const weight = s.scratch.template take<float>(slots);
-    std::fill(along, along + slots, 0.0f);
-    std::fill(smooth, smooth + slots, 0.0f);
-    std::fill(weight, weight + slots, 0.0f);
+    s.threads.forRanges(slots, 4 * kBlockGrain, [along, smooth, weight](size_t first, size_t last) {
+        std::fill(along + first, along + last, 0.0f);
+        std::fill(smooth + first, smooth + last, 0.0f);
+        std::fill(weight + first, weight + last, 0.0f);
+    });
     // The vertices that are not free, or free outside regular blocks.
     uint32_t *const others = s.scratch.template take<uint32_t>(V);
     size_t otherCount = 0;
@@ -213,11 +215,14 @@ VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds, int wid
     average(along, smooth, rounds);
     if (wideRounds > rounds) {
         float *const local = s.scratch.template take<float>(slots);
-        std::copy(along, along + slots, local);
+        threads.forRanges(slots, 4 * kBlockGrain, [along, local](size_t first, size_t last) {
+            std::copy(along + first, along + last, local + first);
+        });
         average(along, smooth, wideRounds - rounds);
         // Where the shape turns (see above), by slot; the zero slot stays 0.
         float *near = s.scratch.template take<float>(slots);
-        std::fill(near, near + slots, 0.0f);
+        threads.forRanges(slots, 4 * kBlockGrain,
+                          [near](size_t first, size_t last) { std::fill(near + first, near + last, 0.0f); });
         const VertexNormal *const vertexNormal = s.vertexNormal;
         const float turnCos = std::cos(glm::radians(kTurnDegrees));
         const float latticeCos = std::cos(glm::radians(kLatticeDegrees));
@@ -225,7 +230,8 @@ VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds, int wid
         // in the ranges' order.)
         const size_t grain = 4 * kBlockGrain, chunks = (V + grain - 1) / grain;
         std::vector<std::vector<uint32_t>> markedIn(chunks);
-        threads.run(chunks, [&](size_t chunk) {
+        threads.run(chunks, [&markedIn, vertexNormal, kind, start, next, rank, near, latticeCos, turnCos, grain,
+                             V](size_t chunk) {
             for (size_t v = chunk * grain; v < std::min(V, (chunk + 1) * grain); ++v) {
                 const glm::vec3 n = vertexNormal[v].n, a = glm::abs(n);
                 bool turns = !isFree(kind[v]) || std::max(a.x, std::max(a.y, a.z)) > latticeCos;
