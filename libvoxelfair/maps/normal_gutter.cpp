@@ -21,21 +21,26 @@ constexpr int kBlockBandRows = 32;  // even: bands hold whole blocks
 
 constexpr int kMaxBlockSide = 8;  // a map up to 4 times the atlas' side (normal_bake.h)
 
-// The side x side block at (x, y): its unpainted texels take the renormalised mean of its painted ones.
+// The side x side block at (x, y): its unpainted texels take the renormalised mean of its painted
+// ones. Side 0: `side` texels (at most kMaxBlockSide); else Side (2: the common block, unrolled).
+template <int Side>
 void fillBlock(int x, int y, int side, int width, int height, std::vector<uint8_t> &state, uint8_t *image) {
+    if (Side > 0)
+        side = Side;
     int sum[3] = {0, 0, 0}, n = 0, texelCount = 0;
-    size_t at[kMaxBlockSide * kMaxBlockSide];
-    for (int dy = 0; dy < std::min(side, height - y); ++dy)
-        for (int dx = 0; dx < std::min(side, width - x); ++dx) {
-            const size_t t = size_t(y + dy) * size_t(width) + size_t(x + dx);
-            at[texelCount++] = t;
-            if (state[t] & kTexelPainted) {
-                const uint8_t *p = &image[(size_t(height - 1 - y - dy) * size_t(width) + size_t(x + dx)) * 4];
+    const int rows = std::min(side, height - y), columns = std::min(side, width - x);
+    for (int dy = 0; dy < rows; ++dy) {
+        const uint8_t *const states = &state[size_t(y + dy) * size_t(width) + size_t(x)];
+        const uint8_t *const colours = &image[(size_t(height - 1 - y - dy) * size_t(width) + size_t(x)) * 4];
+        for (int dx = 0; dx < columns; ++dx) {
+            ++texelCount;
+            if (states[dx] & kTexelPainted) {
                 for (int c = 0; c < 3; ++c)
-                    sum[c] += 2 * p[c] - 255;
+                    sum[c] += 2 * colours[4 * dx + c] - 255;
                 ++n;
             }
         }
+    }
     if (n == 0 || n == texelCount)
         return;
     const glm::vec3 mean{float(sum[0]), float(sum[1]), float(sum[2])};
@@ -43,13 +48,16 @@ void fillBlock(int x, int y, int side, int width, int height, std::vector<uint8_
     if (!(length > 0.0f))
         return;
     const glm::vec3 c = mean / length;
-    for (int k = 0; k < texelCount; ++k)
-        if (!(state[at[k]] & kTexelPainted)) {
-            const size_t x1 = at[k] % size_t(width), y1 = at[k] / size_t(width);
-            uint8_t *p = &image[(size_t(height - 1) - y1) * size_t(width) * 4 + x1 * 4];
-            p[0] = encodeFast(c.x), p[1] = encodeFast(c.y), p[2] = encodeFast(c.z);
-            state[at[k]] |= kTexelPainted;
-        }
+    const uint8_t r = encodeFast(c.x), g = encodeFast(c.y), b = encodeFast(c.z);
+    for (int dy = 0; dy < rows; ++dy) {
+        uint8_t *const states = &state[size_t(y + dy) * size_t(width) + size_t(x)];
+        uint8_t *const colours = &image[(size_t(height - 1 - y - dy) * size_t(width) + size_t(x)) * 4];
+        for (int dx = 0; dx < columns; ++dx)
+            if (!(states[dx] & kTexelPainted)) {
+                colours[4 * dx] = r, colours[4 * dx + 1] = g, colours[4 * dx + 2] = b;
+                states[dx] |= kTexelPainted;
+            }
+    }
 }
 
 }  // namespace
@@ -59,17 +67,32 @@ void fillNormalGutter(int width, int height, std::vector<uint8_t> &state, std::v
     const uint8_t *const painted = state.data();
     uint8_t *const image = rgba.data();
     dilateTexels(width, height, state, rings, threads, [painted, image, width, height](int x, int y) {
-        // The mean of the decoded neighbours, (2 c - 255) / 255 each, up to its scale: integers.
-        int sx = 0, sy = 0, sz = 0, n = 0;
-        for (int ny = std::max(y - 1, 0); ny <= std::min(y + 1, height - 1); ++ny) {
-            const uint8_t *const row = painted + size_t(ny) * size_t(width);
-            const uint8_t *const colours = image + size_t(height - 1 - ny) * size_t(width) * 4;
-            for (int nx = std::max(x - 1, 0); nx <= std::min(x + 1, width - 1); ++nx) {
-                const int m = row[nx] & kTexelPainted;  // 0 or 1: branch-free sums
-                const uint8_t *p = colours + size_t(nx) * 4;
-                sx += m * p[0], sy += m * p[1], sz += m * p[2], n += m;
+        // The sums of the decoded neighbours, (2 c - 255) / 255 each, up to its scale: integers,
+        // summed as bytes in the lanes of two words (red and blue in 16-bit halves of one, green
+        // in the other: 9 x 255 fit), a neighbour masked out when unpainted (branch-free).
+        uint32_t redBlue = 0, green = 0;
+        int n = 0;
+        auto add = [&](const uint8_t *row, const uint8_t *colours, int nx) {
+            const uint32_t m = row[nx] & kTexelPainted;  // 0 or 1
+            uint32_t rgba;
+            std::memcpy(&rgba, colours + size_t(nx) * 4, 4);  // bytes r, g, b, a from the lowest
+            rgba &= 0u - m;
+            redBlue += rgba & 0x00FF00FFu, green += rgba & 0x0000FF00u, n += int(m);
+        };
+        const size_t w = size_t(width);
+        if (x > 0 && y > 0 && x + 1 < width && y + 1 < height) {
+            // Inside the image (most ring texels): 3 x 3 neighbours, unrolled.
+            for (int dy = -1; dy <= 1; ++dy) {
+                const uint8_t *const row = painted + size_t(y + dy) * w + size_t(x - 1);
+                const uint8_t *const colours = image + (size_t(height - 1 - y - dy) * w + size_t(x - 1)) * 4;
+                add(row, colours, 0), add(row, colours, 1), add(row, colours, 2);
             }
+        } else {
+            for (int ny = std::max(y - 1, 0); ny <= std::min(y + 1, height - 1); ++ny)
+                for (int nx = std::max(x - 1, 0); nx <= std::min(x + 1, width - 1); ++nx)
+                    add(painted + size_t(ny) * w, image + size_t(height - 1 - ny) * w * 4, nx);
         }
+        const int sx = int(redBlue & 0xFFFFu), sy = int(green >> 8), sz = int(redBlue >> 16);
         const glm::vec3 sum(float(2 * sx - 255 * n), float(2 * sy - 255 * n), float(2 * sz - 255 * n));
         const float length = glm::length(sum);
         if (!(length > 0.0f))
@@ -87,7 +110,7 @@ void fillNormalGutter(int width, int height, std::vector<uint8_t> &state, std::v
         const size_t side = size_t(blockSide), bands = (size_t(height) + side - 1) / side;
         runBands(bands, threads, [&](size_t band) {
             for (int x = 0; x < width; x += blockSide)
-                fillBlock(x, int(band * side), blockSide, width, height, state, image);
+                fillBlock<0>(x, int(band * side), blockSide, width, height, state, image);
         });
         return;
     }
@@ -110,10 +133,10 @@ void fillNormalGutter(int width, int height, std::vector<uint8_t> &state, std::v
                 if ((a | b) == 0 || (a & b) == kAll)
                     continue;
                 for (int k = x; k < x + 8; k += 2)
-                    fillBlock(k, y, 2, width, height, state, image);
+                    fillBlock<2>(k, y, 2, width, height, state, image);
             }
             for (; x < width; x += 2)
-                fillBlock(x, y, 2, width, height, state, image);
+                fillBlock<2>(x, y, 2, width, height, state, image);
         }
     });
 }
