@@ -120,7 +120,7 @@ NormalMap bakeNormalMapWork(const NormalBakeMesh &source, const NormalBakeMesh &
                 break;
             default:
                 sortedReady.wait();
-                grid = std::make_unique<UvFaceGrid>(sorted->mesh, width, height);
+                grid = std::make_unique<UvFaceGrid>(*sorted, width, height);
                 break;
             }
         });

@@ -7,48 +7,69 @@
 
 namespace voxelfair {
 
-UvFaceGrid::UvFaceGrid(const NormalBakeMesh &m, int width, int height)
-    : mesh_(m), width_(width), height_(height), cellsX_((width + kCell - 1) / kCell),
-      cellsY_((height + kCell - 1) / kCell) {
-    start_.assign(size_t(cellsX_) * size_t(cellsY_) + 1, 0);
-    auto forCells = [&](size_t f, auto &&visit) {
-        glm::dvec2 q[3];
-        loadUv(m, f, width, height, q);
-        const glm::dvec2 lo = glm::min(q[0], glm::min(q[1], q[2])), hi = glm::max(q[0], glm::max(q[1], q[2]));
-        const int x0 = std::clamp(int(lo.x) / kCell, 0, cellsX_ - 1),
-                  x1 = std::clamp(int(hi.x) / kCell, 0, cellsX_ - 1);
-        const int y0 = std::clamp(int(lo.y) / kCell, 0, cellsY_ - 1),
-                  y1 = std::clamp(int(hi.y) / kCell, 0, cellsY_ - 1);
-        for (int y = y0; y <= y1; ++y)
-            for (int x = x0; x <= x1; ++x)
-                visit(size_t(y) * size_t(cellsX_) + size_t(x));
-    };
-    for (size_t f = 0; f < m.faceCount; ++f)
-        forCells(f, [&](size_t c) { ++start_[c + 1]; });
-    for (size_t c = 1; c < start_.size(); ++c)
-        start_[c] += start_[c - 1];
-    faces_.resize(start_.back());
-    std::vector<uint32_t> fill(start_.begin(), start_.end() - 1);
-    for (size_t f = 0; f < m.faceCount; ++f)
-        forCells(f, [&](size_t c) { faces_[fill[c]++] = uint32_t(f); });
+UvFaceGrid::UvFaceGrid(const SortedSource &sorted, int width, int height)
+    : sorted_(sorted), width_(width), height_(height), cellsX_((width + kCell - 1) / kCell),
+      cellsY_((height + kCell - 1) / kCell), box_(4 * sorted.mesh.faceCount) {
+    // Each face's box in cells (clamped to the grid), and the faces reaching beyond their bucket's
+    // neighbourhood. The sorted source's buckets are the same cells, row by row.
+    const NormalBakeMesh &m = sorted.mesh;
+    for (int by = 0; by < cellsY_; ++by)
+        for (int bx = 0; bx < cellsX_; ++bx) {
+            const size_t bucket = size_t(by) * size_t(cellsX_) + size_t(bx);
+            for (uint32_t f = sorted.cellStart[bucket]; f < sorted.cellStart[bucket + 1]; ++f) {
+                glm::dvec2 q[3];
+                loadUv(m, f, width, height, q);
+                const glm::dvec2 lo = glm::min(q[0], glm::min(q[1], q[2])),
+                                 hi = glm::max(q[0], glm::max(q[1], q[2]));
+                const int x0 = std::clamp(int(lo.x) / kCell, 0, cellsX_ - 1),
+                          x1 = std::clamp(int(hi.x) / kCell, 0, cellsX_ - 1);
+                const int y0 = std::clamp(int(lo.y) / kCell, 0, cellsY_ - 1),
+                          y1 = std::clamp(int(hi.y) / kCell, 0, cellsY_ - 1);
+                uint16_t *const box = &box_[4 * size_t(f)];
+                box[0] = uint16_t(x0), box[1] = uint16_t(x1), box[2] = uint16_t(y0), box[3] = uint16_t(y1);
+                if (x0 < bx - kReach || x1 > bx + kReach || y0 < by - kReach || y1 > by + kReach)
+                    wide_.push_back(f);
+            }
+        }
 }
 
 uint32_t UvFaceGrid::find(glm::dvec2 p) const {
     const int cx = std::clamp(int(p.x) / kCell, 0, cellsX_ - 1), cy = std::clamp(int(p.y) / kCell, 0, cellsY_ - 1);
-    const size_t c = size_t(cy) * size_t(cellsX_) + size_t(cx);
+    auto meets = [&](uint32_t f) {
+        const uint16_t *const box = &box_[4 * size_t(f)];
+        return box[0] <= cx && cx <= box[1] && box[2] <= cy && cy <= box[3];
+    };
+    // The faces whose box meets the cell, in face order: those of the buckets around it (not
+    // wide), and the wide ones.
+    std::vector<uint32_t> faces;
+    for (int by = std::max(cy - kReach, 0); by <= std::min(cy + kReach, cellsY_ - 1); ++by)
+        for (int bx = std::max(cx - kReach, 0); bx <= std::min(cx + kReach, cellsX_ - 1); ++bx) {
+            const size_t bucket = size_t(by) * size_t(cellsX_) + size_t(bx);
+            for (uint32_t f = sorted_.cellStart[bucket]; f < sorted_.cellStart[bucket + 1]; ++f) {
+                const uint16_t *const box = &box_[4 * size_t(f)];
+                const bool wide = box[0] < bx - kReach || box[1] > bx + kReach || box[2] < by - kReach ||
+                                  box[3] > by + kReach;
+                if (!wide && meets(f))
+                    faces.push_back(f);
+            }
+        }
+    for (const uint32_t f : wide_)
+        if (meets(f))
+            faces.push_back(f);
+    std::sort(faces.begin(), faces.end());
     uint32_t nearest = UINT32_MAX;
     double best = 0;
     glm::dvec2 q[3];
-    for (uint32_t i = start_[c]; i < start_[c + 1]; ++i) {
-        loadUv(mesh_, faces_[i], width_, height_, q);
+    for (const uint32_t f : faces) {
+        loadUv(sorted_.mesh, f, width_, height_, q);
         const double d = doubleArea(q[0], q[1], q[2]);
         const double a = doubleArea(p, q[1], q[2]) / d, b = doubleArea(q[0], p, q[2]) / d;
         if (d != 0 && a >= 0 && b >= 0 && a + b <= 1)
-            return faces_[i];
+            return f;
         const glm::dvec2 centroid = (q[0] + q[1] + q[2]) / 3.0;
         const double distance = glm::dot(centroid - p, centroid - p);
         if (nearest == UINT32_MAX || distance < best)
-            nearest = faces_[i], best = distance;
+            nearest = f, best = distance;
     }
     return nearest;
 }

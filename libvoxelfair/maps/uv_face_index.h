@@ -30,20 +30,45 @@ inline void loadUv(const NormalBakeMesh &m, size_t f, int width, int height, glm
         q[k] = glm::dvec2(m.wedgeUv[3 * f + size_t(k)]) * glm::dvec2(width, height);
 }
 
+// The source with its faces renumbered by the atlas cell (kSortCell texels square) of their UV
+// centroid, cells row by row (a counting sort): faces near in the atlas are near in memory, and
+// the source faces under a target face lie in a few runs the walk can fetch ahead.
+struct SortedSource {
+    static constexpr int kSortCell = 16;
+    std::vector<uint32_t> triangles;
+    std::vector<glm::vec2> wedgeUv;
+    int cellsX = 0, cellsY = 0;
+    std::vector<uint32_t> cellStart;   // the faces of cell c: [cellStart[c], cellStart[c + 1])
+    std::vector<uint32_t> sortedFace;  // the source's face f is face sortedFace[f] here
+    NormalBakeMesh mesh;
+
+    SortedSource(const NormalBakeMesh &source, int width, int height);
+    uint32_t cell(double x, double y) const {
+        const int cx = std::isfinite(x) ? std::clamp(int(x / kSortCell), 0, cellsX - 1) : 0;
+        const int cy = std::isfinite(y) ? std::clamp(int(y / kSortCell), 0, cellsY - 1) : 0;
+        return uint32_t(cy) * uint32_t(cellsX) + uint32_t(cx);
+    }
+};
+
 // Source faces by the texel-space boxes of their UV triangles, in cells of 16 x 16 texels: where
-// a texel's walk starts (the source face under the same UV).
+// a texel's walk starts when no source face is under it (a few thousand asks). The faces of a
+// cell are found when asked, not listed up front: a face's box meets the cells within kReach of
+// its centroid's cell (the sorted source's bucket), or it is one of the few wide faces kept apart.
 class UvFaceGrid {
 public:
-    UvFaceGrid(const NormalBakeMesh &m, int width, int height);
-    // The source face whose UV triangle holds texel-space point p, else the one whose UV centroid
-    // is nearest among those of p's cell; UINT32_MAX when the cell is empty.
+    UvFaceGrid(const SortedSource &sorted, int width, int height);
+    // The source face (in the sorted source) whose UV triangle holds texel-space point p, else
+    // the one whose UV centroid is nearest among those whose box meets p's cell, the first in
+    // face order of either; UINT32_MAX when none meets the cell.
     uint32_t find(glm::dvec2 p) const;
 
 private:
-    static constexpr int kCell = 16;
-    const NormalBakeMesh &mesh_;
+    static constexpr int kCell = SortedSource::kSortCell;
+    static constexpr int kReach = 1;
+    const SortedSource &sorted_;
     int width_, height_, cellsX_, cellsY_;
-    std::vector<uint32_t> start_, faces_;
+    std::vector<uint16_t> box_;  // per face: its box's first and last cells, x0, x1, y0, y1
+    std::vector<uint32_t> wide_;  // faces whose box reaches beyond kReach of their bucket
 };
 
 // Target faces by the bands of rows their UV triangles may touch (conservatively), in face order.
@@ -142,25 +167,5 @@ inline void fillFacesUnder(const NormalBakeMesh &mesh, uint32_t face, int width,
         }
     });
 }
-
-// The source with its faces renumbered by the atlas cell (kSortCell texels square) of their UV
-// centroid, cells row by row (a counting sort): faces near in the atlas are near in memory, and
-// the source faces under a target face lie in a few runs the walk can fetch ahead.
-struct SortedSource {
-    static constexpr int kSortCell = 16;
-    std::vector<uint32_t> triangles;
-    std::vector<glm::vec2> wedgeUv;
-    int cellsX = 0, cellsY = 0;
-    std::vector<uint32_t> cellStart;   // the faces of cell c: [cellStart[c], cellStart[c + 1])
-    std::vector<uint32_t> sortedFace;  // the source's face f is face sortedFace[f] here
-    NormalBakeMesh mesh;
-
-    SortedSource(const NormalBakeMesh &source, int width, int height);
-    uint32_t cell(double x, double y) const {
-        const int cx = std::isfinite(x) ? std::clamp(int(x / kSortCell), 0, cellsX - 1) : 0;
-        const int cy = std::isfinite(y) ? std::clamp(int(y / kSortCell), 0, cellsY - 1) : 0;
-        return uint32_t(cy) * uint32_t(cellsX) + uint32_t(cx);
-    }
-};
 
 }  // namespace voxelfair
