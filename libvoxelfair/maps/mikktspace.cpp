@@ -160,16 +160,39 @@ struct Builder {
         struct Edge {
             int i0, i1, f;
         };
-        std::vector<Edge> edges;
-        edges.reserve(3 * healthy);
+        // A counting sort on the smaller vertex (welded corner indices are below 3 x the triangle
+        // count), faces in order within each; then each vertex's few edges by (larger vertex,
+        // triangle), by insertion (a fan of many by std::sort). The keys are distinct: the order of
+        // a full sort.
+        std::vector<int> start(3 * in.triangleCount + 1, 0);
         for (size_t f = 0; f < healthy; ++f)
-            for (int i = 0; i < 3; ++i) {
-                const int a = tris[f].corner[i], b = tris[f].corner[(i + 1) % 3];
-                edges.push_back({std::min(a, b), std::max(a, b), int(f)});
+            for (int i = 0; i < 3; ++i)
+                ++start[size_t(std::min(tris[f].corner[i], tris[f].corner[(i + 1) % 3])) + 1];
+        for (size_t v = 1; v < start.size(); ++v)
+            start[v] += start[v - 1];
+        std::vector<Edge> edges(3 * healthy);
+        {
+            std::vector<int> fill(start.begin(), start.end() - 1);
+            for (size_t f = 0; f < healthy; ++f)
+                for (int i = 0; i < 3; ++i) {
+                    const int a = tris[f].corner[i], b = tris[f].corner[(i + 1) % 3];
+                    edges[size_t(fill[size_t(std::min(a, b))]++)] = {std::min(a, b), std::max(a, b), int(f)};
+                }
+        }
+        auto before = [](const Edge &a, const Edge &b) { return a.i1 != b.i1 ? a.i1 < b.i1 : a.f < b.f; };
+        for (size_t v = 0; v + 1 < start.size(); ++v) {
+            if (start[v + 1] - start[v] > 16) {  // a fan of many triangles
+                std::sort(edges.begin() + start[v], edges.begin() + start[v + 1], before);
+                continue;
             }
-        std::sort(edges.begin(), edges.end(), [](const Edge &a, const Edge &b) {
-            return a.i0 != b.i0 ? a.i0 < b.i0 : a.i1 != b.i1 ? a.i1 < b.i1 : a.f < b.f;
-        });
+            for (int i = start[v] + 1; i < start[v + 1]; ++i) {
+                const Edge e = edges[size_t(i)];
+                int j = i;
+                for (; j > start[v] && before(e, edges[size_t(j - 1)]); --j)
+                    edges[size_t(j)] = edges[size_t(j - 1)];
+                edges[size_t(j)] = e;
+            }
+        }
         // Edge number of (a, b) in triangle f and whether f runs it from a to b.
         auto edgeOf = [&](int f, int a, int b, bool &forward) {
             const int *c = tris[size_t(f)].corner;
