@@ -19,8 +19,7 @@ UvFaceGrid::UvFaceGrid(const SortedSource &sorted, int width, int height)
             for (uint32_t f = sorted.cellStart[bucket]; f < sorted.cellStart[bucket + 1]; ++f) {
                 glm::dvec2 q[3];
                 loadUv(m, f, width, height, q);
-                const glm::dvec2 lo = glm::min(q[0], glm::min(q[1], q[2])),
-                                 hi = glm::max(q[0], glm::max(q[1], q[2]));
+                const glm::dvec2 lo = glm::min(q[0], glm::min(q[1], q[2])), hi = glm::max(q[0], glm::max(q[1], q[2]));
                 const int x0 = std::clamp(int(lo.x) / kCell, 0, cellsX_ - 1),
                           x1 = std::clamp(int(hi.x) / kCell, 0, cellsX_ - 1);
                 const int y0 = std::clamp(int(lo.y) / kCell, 0, cellsY_ - 1),
@@ -47,8 +46,8 @@ uint32_t UvFaceGrid::find(glm::dvec2 p) const {
             const size_t bucket = size_t(by) * size_t(cellsX_) + size_t(bx);
             for (uint32_t f = sorted_.cellStart[bucket]; f < sorted_.cellStart[bucket + 1]; ++f) {
                 const uint16_t *const box = &box_[4 * size_t(f)];
-                const bool wide = box[0] < bx - kReach || box[1] > bx + kReach || box[2] < by - kReach ||
-                                  box[3] > by + kReach;
+                const bool wide =
+                    box[0] < bx - kReach || box[1] > bx + kReach || box[2] < by - kReach || box[3] > by + kReach;
                 if (!wide && meets(f))
                     faces.push_back(f);
             }

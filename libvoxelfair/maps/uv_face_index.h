@@ -72,7 +72,7 @@ private:
     static constexpr int kReach = 1;
     const SortedSource &sorted_;
     int width_, height_, cellsX_, cellsY_;
-    std::vector<uint16_t> box_;  // per face: its box's first and last cells, x0, x1, y0, y1
+    std::vector<uint16_t> box_;   // per face: its box's first and last cells, x0, x1, y0, y1
     std::vector<uint32_t> wide_;  // faces whose box reaches beyond kReach of their bucket
 };
 
@@ -148,8 +148,8 @@ void underSpans(const glm::vec2 *uv, int width, int height, int r0, int r1, Span
         auto all = [](float v) { return _mm_set1_ps(v); };
         const __m128 half = all(0.5f), w = all(float(width)), minusOne = all(-1.0f);
         for (; y <= y1; y += 4) {
-            const __m128 cy = _mm_add_ps(_mm_cvtepi32_ps(_mm_add_epi32(_mm_set1_epi32(y), _mm_setr_epi32(0, 1, 2, 3))),
-                                         half);
+            const __m128 cy =
+                _mm_add_ps(_mm_cvtepi32_ps(_mm_add_epi32(_mm_set1_epi32(y), _mm_setr_epi32(0, 1, 2, 3))), half);
             const __m128 l0 = _mm_add_ps(all(lx0), _mm_mul_ps(_mm_sub_ps(cy, all(ly0)), all(li0)));
             const __m128 l1 = _mm_add_ps(all(lx1), _mm_mul_ps(_mm_sub_ps(cy, all(ly1)), all(li1)));
             const __m128 r0v = _mm_add_ps(all(rx0), _mm_mul_ps(_mm_sub_ps(cy, all(ry0)), all(ri0)));
@@ -162,8 +162,8 @@ void underSpans(const glm::vec2 *uv, int width, int height, int r0, int r1, Span
             const __m128i a4 = _mm_sub_epi32(fromInt, _mm_castps_si128(_mm_cmplt_ps(_mm_cvtepi32_ps(fromInt), from)));
             const __m128i b4 = _mm_add_epi32(toInt, _mm_castps_si128(_mm_cmpgt_ps(_mm_cvtepi32_ps(toInt), to)));
             const int skip = horizontal >= 0
-                                 ? _mm_movemask_ps(_mm_cmplt_ps(_mm_mul_ps(all(rowSign), _mm_sub_ps(cy, all(horizontalY))),
-                                                                _mm_setzero_ps()))
+                                 ? _mm_movemask_ps(_mm_cmplt_ps(
+                                       _mm_mul_ps(all(rowSign), _mm_sub_ps(cy, all(horizontalY))), _mm_setzero_ps()))
                                  : 0;
             alignas(16) int as[4], bs[4];
             _mm_store_si128(reinterpret_cast<__m128i *>(as), a4);
