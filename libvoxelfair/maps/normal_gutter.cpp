@@ -21,27 +21,25 @@ constexpr int kBlockBandRows = 32;  // even: bands hold whole blocks
 
 constexpr int kMaxBlockSide = 8;  // a map up to 4 times the atlas' side (normal_bake.h)
 
-// The side x side block at (x, y): its unpainted texels take the renormalised mean of its painted
-// ones. Side 0: `side` texels (at most kMaxBlockSide); else Side (2: the common block, unrolled).
-template <int Side>
-void fillBlock(int x, int y, int side, int width, int height, std::vector<uint8_t> &state, uint8_t *image) {
-    if (Side > 0)
-        side = Side;
-    int sum[3] = {0, 0, 0}, n = 0, texelCount = 0;
-    const int rows = std::min(side, height - y), columns = std::min(side, width - x);
+// The block of rows x columns texels at (x, y): its unpainted texels take the renormalised mean
+// of its painted ones. Rows, Columns > 0: the block's size known when compiled (unrolled).
+template <int Rows, int Columns>
+void fillBlockOf(int x, int y, int rows, int columns, int width, int height, std::vector<uint8_t> &state,
+                 uint8_t *image) {
+    if (Rows > 0)
+        rows = Rows, columns = Columns;
+    int sum[3] = {0, 0, 0}, n = 0;
     for (int dy = 0; dy < rows; ++dy) {
         const uint8_t *const states = &state[size_t(y + dy) * size_t(width) + size_t(x)];
         const uint8_t *const colours = &image[(size_t(height - 1 - y - dy) * size_t(width) + size_t(x)) * 4];
         for (int dx = 0; dx < columns; ++dx) {
-            ++texelCount;
-            if (states[dx] & kTexelPainted) {
-                for (int c = 0; c < 3; ++c)
-                    sum[c] += 2 * colours[4 * dx + c] - 255;
-                ++n;
-            }
+            const int m = states[dx] & kTexelPainted;  // 0 or 1: branch-free sums
+            for (int c = 0; c < 3; ++c)
+                sum[c] += m * (2 * colours[4 * dx + c] - 255);
+            n += m;
         }
     }
-    if (n == 0 || n == texelCount)
+    if (n == 0 || n == rows * columns)
         return;
     const glm::vec3 mean{float(sum[0]), float(sum[1]), float(sum[2])};
     const float length = glm::length(mean);
@@ -58,6 +56,16 @@ void fillBlock(int x, int y, int side, int width, int height, std::vector<uint8_
                 states[dx] |= kTexelPainted;
             }
     }
+}
+
+// The side x side block at (x, y), cut by the image's edges; Side > 0: side is Side, and a block
+// inside the image is done unrolled (2: the common block).
+template <int Side>
+void fillBlock(int x, int y, int side, int width, int height, std::vector<uint8_t> &state, uint8_t *image) {
+    if (Side > 0 && x + Side <= width && y + Side <= height)
+        fillBlockOf<Side, Side>(x, y, Side, Side, width, height, state, image);
+    else
+        fillBlockOf<0, 0>(x, y, std::min(side, height - y), std::min(side, width - x), width, height, state, image);
 }
 
 }  // namespace
