@@ -80,6 +80,13 @@ FaceBands faceBands(const NormalBakeMesh &mesh, int width, int height, int bandR
     // Each face's bands [first, last] (first > last: none) and its UV box's left texel, once.
     std::vector<uint32_t> first(mesh.faceCount), last(mesh.faceCount), column(size_t(width) + 2, 0);
     std::vector<uint32_t> left(mesh.faceCount);
+    // A row's band (rows are not negative): a shift for the bands of a power of two of rows (32,
+    // the bake's), instead of a division a face twice.
+    int shift = -1;
+    for (int s = 0; s < 31; ++s)
+        if (bandRows == 1 << s)
+            shift = s;
+    auto bandOf = [&](int row) { return uint32_t(shift >= 0 ? row >> shift : row / bandRows); };
     for (size_t f = 0; f < mesh.faceCount; ++f) {
         glm::dvec2 q[3];
         loadUv(mesh, f, width, height, q);
@@ -88,8 +95,8 @@ FaceBands faceBands(const NormalBakeMesh &mesh, int width, int height, int bandR
             first[f] = 1, last[f] = 0;
             continue;
         }
-        first[f] = uint32_t(std::clamp(int(std::floor(lo)) - 1, 0, height - 1) / bandRows);
-        last[f] = uint32_t(std::clamp(int(std::ceil(hi)) + 1, 0, height - 1) / bandRows);
+        first[f] = bandOf(std::clamp(int(std::floor(lo)) - 1, 0, height - 1));
+        last[f] = bandOf(std::clamp(int(std::ceil(hi)) + 1, 0, height - 1));
         for (uint32_t b = first[f]; b <= last[f]; ++b)
             ++out.start[b + 1];
         const glm::vec2 *uv = &mesh.wedgeUv[3 * f];
