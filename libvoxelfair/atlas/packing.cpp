@@ -101,20 +101,18 @@ constexpr double kFillHeightAim = 0.97;
 constexpr double kLeastFillGain = 1.04;
 // A larger model's first fill aim this close above its fallback (below) is not tried first.
 constexpr double kCloseFillAims = 1.03;
-// Aimed from a coarse packing (coarseFill), the fill takes these shares of the efficiency and of
-// the height share it saw: its packing is of other shapes (cores half as large, rims as wide) and
-// filled 0.9-1.24 times as efficiently as the packing at the density asked on the tank and the
-// 185k sphere at 2-12 texels per voxel. Calibrated there and on the four shared models over 32768
-// faces to miss no more often than aiming from the packing at the density asked.
-constexpr double kCoarseEfficiency = 0.92;
-constexpr double kCoarseHeight = 0.96;
 
-// Each chart's room in `packing` (in mask units, for a side x height rectangle in texels): its
-// box when packed as one (small, no bitmap), else its bitmap's blocks or its rows' spans.
-std::vector<double> chartRooms(const Packing &packing, int side, int height) {
+// The factor on the density of `masks` (packed with the tight packer, fitting) at which the
+// charts' room, estimated from the masks (each mask's core scaled, its padding and conservative
+// rim kept), fills `efficiency` of a side x height rectangle: the packing's room per texel of
+// the rows it reached, which a denser packing of the same charts matches or beats. At most
+// `ceiling`.
+double fillScale(const Packing &packing, int side, int height, double efficiency, double ceiling) {
     const ChartMasks &masks = packing.packed();
     const int b = packing.block;
     side /= b, height /= b;  // in mask units
+    const double rim = (2.0 * masks.padding + b) / b;
+    // Each chart's room now: its box when packed as one (small, no bitmap), else its bitmap's blocks or its rows' spans.
     std::vector<double> now(masks.charts.size());
     for (size_t c = 0; c < masks.charts.size(); ++c) {
         const ChartMask &m = masks.charts[c];
@@ -130,57 +128,28 @@ std::vector<double> chartRooms(const Packing &packing, int side, int height) {
         for (int y = 0; y < m.height; ++y)
             now[c] += std::max(0, r[y] - l[y] + 1);
     }
-    return now;
-}
-
-// The charts' room (in mask units) once `packing`'s density is multiplied by `scale`, from each
-// chart's room now: its core scaled, its padding and conservative rim kept. The core is the
-// mask less a rim of padding and one block, or with `charts`, the chart's own extent at the
-// masks' density (the rest of the mask, whatever it is, kept).
-double roomAt(const Packing &packing, const std::vector<double> &now, double scale,
-              const AtlasCharts *charts = nullptr) {
-    const ChartMasks &masks = packing.packed();
-    const int b = packing.block;
-    const double rim = (2.0 * masks.padding + b) / b;
-    double total = 0;
-    for (size_t c = 0; c < masks.charts.size(); ++c) {
-        const double w = masks.charts[c].width, h = masks.charts[c].height;
-        double coreW = std::max(0.0, w - rim), coreH = std::max(0.0, h - rim);
-        if (charts && !charts->isDegenerate(c)) {
-            coreW = std::min(w, charts->chartSize[c].x * masks.texelsPerUnit / b);
-            coreH = std::min(h, charts->chartSize[c].y * masks.texelsPerUnit / b);
-        } else if (charts) {
-            coreW = coreH = 0;
+    auto room = [&](double scale) {
+        double total = 0;
+        for (size_t c = 0; c < masks.charts.size(); ++c) {
+            const double w = masks.charts[c].width, h = masks.charts[c].height;
+            total += now[c] * (std::max(0.0, w - rim) * scale + rim) * (std::max(0.0, h - rim) * scale + rim) / (w * h);
         }
-        total += now[c] * (coreW * scale + w - coreW) * (coreH * scale + h - coreH) / (w * h);
-    }
-    return total;
-}
-
-// The factor on the density of `masks` (packed with the tight packer, fitting) at which the
-// charts' room, estimated from the masks (each mask's core scaled, its padding and conservative
-// rim kept), fills `efficiency` of a side x height rectangle: the packing's room per texel of
-// the rows it reached, which a denser packing of the same charts matches or beats. At most
-// `ceiling`.
-double fillScale(const Packing &packing, int side, int height, double efficiency, double ceiling,
-                 const AtlasCharts *charts = nullptr) {
-    const std::vector<double> now = chartRooms(packing, side, height);
-    const int b = packing.block;
-    const int units = side / b, rows = height / b;  // in mask units
-    const double target = efficiency * units * rows;
+        return total;
+    };
+    const double target = efficiency * side * height;
     double lo = 1, hi = std::max(1.0, ceiling);
-    if (roomAt(packing, now, hi, charts) <= target)
+    if (room(hi) <= target)
         return hi;
     for (int i = 0; i < 40; ++i) {
         const double mid = 0.5 * (lo + hi);
-        (roomAt(packing, now, mid, charts) <= target ? lo : hi) = mid;
+        (room(mid) <= target ? lo : hi) = mid;
     }
     return lo;
 }
 
 bool densestFit(const AtlasCharts &charts, const PackOptions &o, int padding, int side, int height, double ceiling,
                 Packing &best, double &density, size_t &attempts, double known = 0, double knownFilled = 0,
-                double knownReached = 0, const Packing *aim = nullptr, double aimDensity = 0) {
+                double knownReached = 0) {
     // Upper bound: the charts' projected area cannot exceed the texture, nor a chart its side.
     double area = 0, longest = 0;
     for (size_t c = 0; c < charts.chartCount(); ++c) {
@@ -201,14 +170,8 @@ bool densestFit(const AtlasCharts &charts, const PackOptions &o, int padding, in
     if (known > 0) {
         // Aim from the known fit: the charts' room estimated at a higher density, filling as well as they did; should
         // that miss, the packed height grown like the density squared (below it, usually).
-        // From a coarse packing (`aim`, at aimDensity, in half the side and height) when the known
-        // density's own packing was skipped: the same shares, its masks scaled from aimDensity.
-        const double from = aim ? aimDensity : known;
-        fallback =
-            knownReached > 0 ? known * std::sqrt(kFillHeightAim * (aim ? kCoarseHeight : 1.0) / knownReached) : 0;
-        d = knownReached > 0  ? from * fillScale(aim ? *aim : best, side, height,
-                                                (aim ? kCoarseEfficiency : 1.0) * knownFilled / knownReached,
-                                                miss / from, aim ? &charts : nullptr)
+        fallback = knownReached > 0 ? known * std::sqrt(kFillHeightAim / knownReached) : 0;
+        d = knownReached > 0  ? known * fillScale(best, side, height, knownFilled / knownReached, miss / known)
             : knownFilled > 0 ? known * std::sqrt(kFillAim / knownFilled)
                               : miss * 0.85;
         d = std::max(d, fallback);
@@ -292,68 +255,6 @@ void nextShape(bool wide, int &width, int &height) {
         width *= 2, height *= 2;
 }
 
-// Large models' fill (PackOptions::coarseFirst): the texture and the fill's first aim chosen from
-// a packing at kCoarseScale of the density asked in a texture of kCoarseScale its side and height
-// (the same charts, their cores smaller and their rims as wide, so a little fuller than packed at
-// the density asked: a fit there is a fit here), about a quarter of the work. Sets out.size,
-// height, out.texelsPerUnit and `packing` (fitting) and returns true; false where the coarse
-// packing cannot tell (it missed a size the charts may fill): the caller then packs at the
-// density asked as without it.
-constexpr double kCoarseScale = 0.5;
-
-bool coarseFill(const AtlasCharts &charts, const PackOptions &o, int padding, int maxSide, bool wide, Packing &packing,
-                AtlasLayout &out, int &height) {
-    Packing coarse;
-    coarse.block = packing.block;
-    const double known = out.texelsPerUnit, dc = known * kCoarseScale;
-    ++out.packAttempts;
-    if (!rasterize(charts, dc, padding, int(maxSide * kCoarseScale), o.threads, coarse))
-        return false;
-    // The masks' sizes and row spans at the density asked, estimated (cores scaled, rims kept),
-    // a little low so that no size the charts may fill is passed over.
-    const int b = coarse.block;
-    const double rim = 2.0 * padding + b;
-    auto fine = [&](int units) { return std::max(0.0, b * units - rim) / kCoarseScale + rim; };
-    double longest = 1, longestShort = 1, room = 0;
-    const ChartMasks &masks = coarse.packed();
-    for (const ChartMask &m : masks.charts) {
-        const double w = fine(m.width), h = fine(m.height);
-        longest = std::max({longest, w, h});
-        longestShort = std::max(longestShort, std::min(w, h));
-        const int16_t *l = m.rowLeft(masks.profiles), *r = m.rowRight(masks.profiles);
-        double spans = 0;
-        for (int y = 0; y < m.height; ++y)
-            spans += std::max(0, r[y] - l[y] + 1);
-        room += spans * w * h / (double(m.width) * m.height);
-    }
-    longest -= 2, longestShort -= 2, room *= 0.97;
-    int side = nextPowerOfTwo(std::max(longest, std::sqrt(room)));
-    height = side;
-    const int half = side / 2;
-    if (wide && side > 1 && double(side) * half >= room && half >= longestShort)
-        height = half;
-    Fit f;
-    for (out.size = side; out.size <= maxSide; nextShape(wide, out.size, height)) {
-        if (out.size < longest || height < longestShort || room > double(out.size) * height)
-            continue;
-        f = place(coarse, PackMode::Tight, int(out.size * kCoarseScale), int(height * kCoarseScale), o.allowRotation,
-                  o.threads);
-        if (!f.fits)
-            return false;
-        break;
-    }
-    if (!f.fits)
-        return false;
-    double density = known;
-    densestFit(charts, o, padding, out.size, height, INFINITY, packing, density, out.packAttempts, known, f.filled,
-               f.reached, &coarse, dc);
-    if (density > known) {
-        out.texelsPerUnit = density;
-        return true;
-    }
-    return attempt(charts, o, known, padding, out.size, height, packing, out.packAttempts).fits;
-}
-
 }  // namespace
 
 AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
@@ -385,15 +286,8 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
         const bool wide = options.allowWide && options.mode == PackMode::Tight;
         bool fits = false;
         double filled = 0, reached = 0;
-        const bool fill = options.fillTexture && options.mode == PackMode::Tight;
-        // Large models: the size and the fill chosen from a coarse packing (coarseFill).
-        const bool coarse = fill && options.coarseFirst &&
-                            charts.faceCount() > size_t(std::max(0, options.cheapFillFaces)) &&
-                            coarseFill(charts, options, padding, maxSide, wide, packing, out, height);
-        fits = coarse;
-        if (!coarse)
-            ++out.packAttempts;
-        if (!coarse && rasterize(charts, out.texelsPerUnit, padding, maxSide, options.threads, packing)) {
+        ++out.packAttempts;
+        if (rasterize(charts, out.texelsPerUnit, padding, maxSide, options.threads, packing)) {
             const int b = packing.block;
             int longest = 1, longestShort = 1;
             for (const ChartMask &m : packing.packed().charts) {
@@ -420,11 +314,11 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
                 }
             }
         }
-        if (fits && fill) {
+        if (fits && options.fillTexture && options.mode == PackMode::Tight) {
             // The density is a minimum: raise it to fill the texture chosen.
             double density = out.texelsPerUnit;
-            if (!coarse && densestFit(charts, options, padding, out.size, height, INFINITY, packing, density,
-                                      out.packAttempts, out.texelsPerUnit, filled, reached))
+            if (densestFit(charts, options, padding, out.size, height, INFINITY, packing, density, out.packAttempts,
+                           out.texelsPerUnit, filled, reached))
                 out.texelsPerUnit = density;
             // Small textures whose charts' rims leave the charts too little of them: the larger
             // sizes up to smallTexels, each at the density that fills it, the best share kept

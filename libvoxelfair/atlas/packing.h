@@ -21,10 +21,7 @@
 //     texture; skipped when it would gain under 4%; after a second miss, the geometric mean of
 //     the fit and the lowest miss; models up to 32768 faces go on after a fit, cheapFillFaces;
 //     larger ones stop at their first fit and try the second aim first when the first is within
-//     3% above it: close aims missed on the larger shared models, and a packing is costly there;
-//     those larger ones, coarseFirst, also choose the texture and aim from a packing at half the
-//     density in half the side instead of one at the density asked, which they pack only when
-//     the fill finds nothing denser),
+//     3% above it: close aims missed on the larger shared models, and a packing is costly there),
 //     so the charts fill it instead of leaving up
 //     to three quarters empty after rounding; a small texture whose charts still fill under
 //     half of it (rims of few small charts) steps up while small (leastChartShare). If even
@@ -72,10 +69,6 @@ struct PackOptions {
     // cheapFillExtra more times and goes on halving the bracket after a fit.
     int cheapFillFaces = 32768;
     int cheapFillExtra = 2;
-    // Larger models choose the texture and aim the fill from a packing at half the density in
-    // half the side (about a quarter of the work), not from one at the density asked; where that
-    // packing cannot tell, as without it.
-    bool coarseFirst = true;
     // Density mode with fillTexture, small textures: each chart's rim (padding, blocks) costs
     // texels whatever the density, and on a model of few small charts the smallest texture
     // holding them is mostly rims (12 faces: 5% charts in 16 x 8). While the charts' projected

@@ -544,30 +544,6 @@ TEST(Packing, EveryFamilyEveryModeIsValid) {
         }
 }
 
-// Larger models choose the texture and aim the fill from a packing at half the density
-// (PackOptions::coarseFirst); forced on every family here (cheapFillFaces 0): the layout stays
-// valid, at least as dense as asked, in the texture that holds the charts at the density asked.
-TEST(Packing, CoarseFirstPackingKeepsTheTextureAndTheLeastDensity) {
-    for (const TestMesh &mesh : families()) {
-        SCOPED_TRACE(mesh.name);
-        const AtlasCharts charts = computeCharts(mesh.view());
-        for (float density : {4.0f, 8.0f}) {
-            PackOptions coarse;
-            coarse.texelsPerUnit = density;
-            coarse.cheapFillFaces = 0;
-            coarse.leastChartShare = 0;
-            const AtlasLayout layout = packCharts(charts, coarse);
-            expectValidAtlas(mesh, charts, layout, kMergeCone);
-            EXPECT_GE(layout.texelsPerUnit, double(density));
-            PackOptions least = coarse;
-            least.fillTexture = false;
-            const AtlasLayout atLeast = packCharts(charts, least);
-            EXPECT_EQ(layout.width, atLeast.width) << density;
-            EXPECT_EQ(layout.height, atLeast.height) << density;
-        }
-    }
-}
-
 TEST(Packing, WiderConeKeepsItsStretchBound) {
     const TestMesh mesh = smoothed(voxelBlob(9, 3));
     ChartOptions options;
