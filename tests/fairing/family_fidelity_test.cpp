@@ -209,3 +209,39 @@ TEST(FairingFamilies, PlaneStageFindsFlatFacesAndNoneOnSpheres) {
     }
     EXPECT_LE(rms[1], rms[0] + 0.005) << "planes on a sphere of radius 40";
 }
+
+// The optional freeing of the ends of genuine edge lines (freeEdgeEnds, constrained_fairing.h):
+// on turned boxes, plates and wedges the short genuine lines of a staircase edge end in vertices
+// that, pinned, stay outside; freed, they are fitted and the mean RMS of each family drops
+// (measured, 8 instances each: 0.133 -> 0.124, 0.120 -> 0.111, 0.117 -> 0.106). Off by default:
+// thin plates and wedges then lose up to 2% of their volume.
+TEST(FairingFamilies, FreeingEdgeEndsBringsFlatFamiliesNearer) {
+    auto meanRms = [](const std::string &family, bool freeEnds, size_t *pinned) {
+        double sum = 0.0;
+        int count = 0;
+        for (const shapes::FamilyShape &s : shapes::familyShapes(kInstances)) {
+            if (s.family != family)
+                continue;
+            const BoundarySurface surface = extractBoundarySurface(shapes::voxelize(s.shape));
+            const comparison::QuadFan fan = comparison::quadFan(surface);
+            std::vector<glm::vec3> positions = surface.positions;
+            ConstrainedFairingOptions options;
+            options.freeEdgeEnds = freeEnds;
+            const ConstrainedFairingReport report = fairConstrained(
+                {positions.data(), positions.size(), fan.offsets.data(), surface.quads.data(), surface.quadCount()},
+                nullptr, options);
+            *pinned += report.pinnedVertices;
+            sum += shapes::measureSurfaceError(positions, fan.triangles, s.shape, 20000).rms;
+            ++count;
+        }
+        return sum / count;
+    };
+    for (const char *family : {"box turned about two axes", "plate", "wedge"}) {
+        size_t pinnedBefore = 0, pinnedAfter = 0;
+        const double before = meanRms(family, false, &pinnedBefore), after = meanRms(family, true, &pinnedAfter);
+        std::printf("%s: mean RMS %.3f, with freeEdgeEnds %.3f; pinned vertices %zu -> %zu\n", family, before, after,
+                    pinnedBefore, pinnedAfter);
+        EXPECT_LT(after, before - 0.005) << family;
+        EXPECT_LT(pinnedAfter, pinnedBefore) << family;
+    }
+}

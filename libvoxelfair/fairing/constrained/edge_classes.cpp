@@ -27,8 +27,9 @@
 // "Staircase-aware smoothing of medical surface meshes" (VCBM 2010); the riser test is ours.
 //
 // Contract (findVertexKinds): a vertex with 2 sharp edges is EdgeLine (its polygons listed in
-// linePolygons); with 1 or 3+, or unselected, or without live polygons, Pinned; otherwise Free,
-// or FreeIrregular when it has more than kRegularValence neighbours or an EdgeLine neighbour.
+// linePolygons); with 1 (unless options.freeEdgeEnds) or 3+, or unselected, or without live
+// polygons, Pinned; otherwise Free, or FreeIrregular when it has more than kRegularValence
+// neighbours or an EdgeLine neighbour.
 #include "fairing/constrained/fairing_state.h"
 
 #include <algorithm>
@@ -242,13 +243,15 @@ VOXELFAIR_NOINLINE void findVertexKinds(FairingState<kQuads> &s) {
     std::vector<std::vector<uint32_t>> linesIn(chunks);
     std::atomic<size_t> pinnedCount{0};
     const uint8_t *const selected = s.selected;
+    const bool freeEnds = s.options.freeEdgeEnds;
     s.threads.run(chunks, [&](size_t chunk) {
         size_t pinned = 0;
         for (size_t v = chunk * grain; v < std::min(V, (chunk + 1) * grain); ++v) {
             if (kind[v] == VertexKind::Skipped || (!anySharp && !selected && start[v] < start[v + 1]))
                 continue;  // (the common case: free)
             const uint8_t degree = anySharp ? sharpDegree[v] : 0;
-            if ((selected && !selected[v]) || start[v] == start[v + 1] || (degree != 0 && degree != 2)) {
+            const bool pinnedEnd = degree != 0 && degree != 2 && !(freeEnds && degree == 1);
+            if ((selected && !selected[v]) || start[v] == start[v + 1] || pinnedEnd) {
                 kind[v] = VertexKind::Pinned;
                 ++pinned;
             } else if (degree == 2) {
