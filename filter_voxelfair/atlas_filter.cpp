@@ -7,7 +7,6 @@
 #include "base/error.h"
 #include "fairing/voxel_size.h"
 
-#include <QDir>
 #include <QElapsedTimer>
 #include <QFileInfo>
 #include <QImage>
@@ -136,7 +135,7 @@ bool FilterVoxelfairPlugin::applyTextureAtlas(MeshModel &m, const RichParameterL
         return fail("Texture Atlas: the texture file name is empty");
     const QImage image(atlas.texture.rgba.data(), atlas.texture.width, atlas.texture.height, atlas.texture.width * 4,
                        QImage::Format_RGBA8888);
-    if (!QDir().mkpath(QFileInfo(path).absolutePath()) || !image.save(path, "PNG"))
+    if (!writePng(image, path))
         return fail(QString("Texture Atlas: could not write the texture to %1").arg(path));
 
     m.updateDataMask(MeshModel::MM_WEDGTEXCOORD);

@@ -2,6 +2,7 @@
 
 #include <QDir>
 #include <QFileInfo>
+#include <QImageWriter>
 
 namespace voxelfair {
 
@@ -30,6 +31,14 @@ QString baseColourPath(const MeshModel &m, const QString &mapPath) {
     if (!QFileInfo::exists(texture))
         texture = besideMesh(m, name);
     return texture;
+}
+
+bool writePng(const QImage &image, const QString &path) {
+    if (!QDir().mkpath(QFileInfo(path).absolutePath()))
+        return false;
+    QImageWriter writer(path, "png");
+    writer.setQuality(50);  // zlib level (100 - quality) * 9 / 91 = 4
+    return writer.write(image);
 }
 
 }  // namespace voxelfair

@@ -13,7 +13,6 @@
 
 #include "../io_vxl/scene_to_meshlab.h"
 
-#include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
 #include <QFileInfo>
@@ -101,7 +100,7 @@ bool FilterVoxelfairPlugin::applyHouseMask(MeshModel &m, const RichParameterList
     if (cb)
         cb(80, "Writing the house colour mask");
     const QImage image(mask.grey.data(), mask.width, mask.height, mask.width, QImage::Format_Grayscale8);
-    if (!QDir().mkpath(QFileInfo(path).absolutePath()) || !image.save(path, "PNG"))
+    if (!writePng(image, path))
         return fail(QString("Bake House Colour Mask: could not write the mask to %1").arg(path));
     MaterialMapFiles files;
     if (const MaterialMapFiles *stored = findMaterialMaps(m.cm))
@@ -165,7 +164,7 @@ bool FilterVoxelfairPlugin::applyMaterialMaps(MeshModel &m, const RichParameterL
             return true;
         const QImage image(pixels.data(), maps.width, maps.height, maps.width * channels,
                            channels == 1 ? QImage::Format_Grayscale8 : QImage::Format_RGB888);
-        if (!QDir().mkpath(QFileInfo(path).absolutePath()) || !image.save(path, "PNG"))
+        if (!writePng(image, path))
             return false;
         name = QFileInfo(path).fileName().toStdString();
         written << QFileInfo(path).fileName();

@@ -9,7 +9,6 @@
 
 #include "../io_vxl/scene_to_meshlab.h"
 
-#include <QDir>
 #include <QElapsedTimer>
 #include <QFileInfo>
 #include <QImage>
@@ -117,8 +116,7 @@ bool FilterVoxelfairPlugin::applyNormalMap(MeshDocument &md, const RichParameter
     if (cb)
         cb(80, "Writing the normal map");
     const QImage image(map.rgba.data(), map.width, map.height, map.width * 4, QImage::Format_RGBA8888);
-    if (!QDir().mkpath(QFileInfo(path).absolutePath()) ||
-        !image.convertToFormat(QImage::Format_RGB888).save(path, "PNG"))
+    if (!writePng(image.convertToFormat(QImage::Format_RGB888), path))
         return fail(QString("Bake Normal Map: could not write the normal map to %1").arg(path));
     // Exporters that know it (the glTF writer) find the map's file name here.
     auto attribute = vcg::tri::Allocator<CMeshO>::GetPerMeshAttribute<std::string>(target.cm, "voxelfair_normal_map");
