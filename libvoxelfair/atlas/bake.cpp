@@ -5,6 +5,7 @@
 #include "base/error.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -52,6 +53,21 @@ struct Canvas {
         filled[i] = 1;
     }
 };
+
+// Whether any of the n bytes at p (0 or 1: Canvas::filled while painting) is 0.
+bool anyEmpty(const uint8_t *p, size_t n) {
+    size_t i = 0;
+    for (; i + 8 <= n; i += 8) {
+        uint64_t v;
+        std::memcpy(&v, p + i, 8);
+        if (v != 0x0101010101010101u)
+            return true;
+    }
+    for (; i < n; ++i)
+        if (p[i] == 0)
+            return true;
+    return false;
+}
 
 BakeSource chooseSource(const AtlasMesh &mesh, BakeSource wanted, std::string &note) {
     const bool face = mesh.faceColours != nullptr, vertex = mesh.vertexColours != nullptr;
@@ -253,40 +269,6 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
     // Face f (UVs q in texels) on rows rowFrom..rowTo: the texels whose centre it holds (no other
     // face holds them), then those it only overlaps that nothing painted yet.
     auto paintFace = [&](size_t f, const glm::dvec2 *q, int rowFrom, int rowTo) {
-        const glm::u8vec3 faceColour = uniform ? colourAt(f, q, 0, 0) : glm::u8vec3(0);
-        if (uniform) {  // one colour: whole spans at once, through raw pointers
-            const uint8_t texel[4] = {faceColour.r, faceColour.g, faceColour.b, 255};
-            uint8_t *rgba = canvas.rgba.data(), *filled = canvas.filled.data();
-            auto fill = [&](size_t from, size_t to) {  // [from, to)
-                for (size_t i = from; i < to; ++i)
-                    std::memcpy(rgba + 4 * i, texel, 4);
-                if (to > from)
-                    std::memset(filled + from, 1, to - from);
-            };
-            auto fillEmpty = [&](size_t from, size_t to) {
-                for (size_t i = from; i < to; ++i)
-                    if (!filled[i]) {
-                        std::memcpy(rgba + 4 * i, texel, 4);
-                        filled[i] = 1;
-                    }
-            };
-            rasterRows(
-                q[0], q[1], q[2], kBakeMargin, width, height,
-                [&](int y, int cl, int cr, int zl, int zr) {
-                    const size_t row = canvas.index(0, y);
-                    if (zl > zr) {
-                        fillEmpty(row + size_t(cl), row + size_t(cr) + 1);
-                        return;
-                    }
-                    fill(row + size_t(zl), row + size_t(zr) + 1);
-                    if (cl < zl)
-                        fillEmpty(row + size_t(cl), row + size_t(std::min(cr, zl - 1)) + 1);
-                    if (cr > zr)
-                        fillEmpty(row + size_t(std::max(cl, zr + 1)), row + size_t(cr) + 1);
-                },
-                rowFrom, rowTo);
-            return;
-        }
         auto paintEdges = [&](size_t row, int y, int from, int to) {
             for (int x = from; x <= to; ++x)
                 if (!canvas.filled[row + size_t(x)])
@@ -307,6 +289,64 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
             },
             rowFrom, rowTo);
     };
+    // One colour per face: the same texels in two passes over the faces, whole spans at once
+    // through raw pointers. A texel takes the colour of the last face holding its centre, else of
+    // the first face overlapping it: the first pass paints the centres (later faces overwriting),
+    // the second the overlapped texels still empty. A face whose overlapped texels (inside the
+    // box of its conservative rows and columns) are all painted by then is skipped without
+    // rasterising it: most faces inside a chart.
+    uint8_t *rgba = canvas.rgba.data(), *filled = canvas.filled.data();
+    auto texelOf = [&](size_t f) {
+        const glm::u8vec3 c = colourAt(f, nullptr, 0, 0);
+        return std::array<uint8_t, 4>{c.r, c.g, c.b, 255};
+    };
+    auto paintCentres = [&](size_t f, const glm::dvec2 *q, int rowFrom, int rowTo) {
+        const std::array<uint8_t, 4> texel = texelOf(f);
+        rasterCentreSpans(
+            q[0], q[1], q[2], width, height,
+            [&](int y, int zl, int zr) {
+                const size_t row = canvas.index(0, y);
+                for (size_t i = row + size_t(zl); i <= row + size_t(zr); ++i)
+                    std::memcpy(rgba + 4 * i, texel.data(), 4);
+                std::memset(filled + row + size_t(zl), 1, size_t(zr) - size_t(zl) + 1);
+            },
+            rowFrom, rowTo);
+    };
+    auto paintOverlapped = [&](size_t f, const glm::dvec2 *q, int rowFrom, int rowTo) {
+        // The conservative raster's box (raster_detail::ConservativeTest), within the rows asked.
+        const double minX = std::min({q[0].x, q[1].x, q[2].x}), maxX = std::max({q[0].x, q[1].x, q[2].x});
+        const double minY = std::min({q[0].y, q[1].y, q[2].y}), maxY = std::max({q[0].y, q[1].y, q[2].y});
+        constexpr double kSafe = 1 << 30;  // ceilToInt and floorToInt hold
+        if (minX > -kSafe && maxX < kSafe && minY > -kSafe && maxY < kSafe) {
+            const int x0 = std::clamp(ceilToInt(minX - 1 - kBakeMargin), 0, width);
+            const int x1 = std::clamp(floorToInt(maxX + kBakeMargin), -1, width - 1);
+            const int y0 = std::max(rowFrom, std::clamp(ceilToInt(minY - 1 - kBakeMargin), 0, height));
+            const int y1 = std::min(rowTo, std::clamp(floorToInt(maxY + kBakeMargin), -1, height - 1));
+            if (x0 > x1)
+                return;
+            int first = y1 + 1, last = y0 - 1;  // the rows of the box with an empty texel
+            for (int y = y0; y <= y1; ++y)
+                if (anyEmpty(filled + canvas.index(x0, y), size_t(x1) - size_t(x0) + 1)) {
+                    first = std::min(first, y);
+                    last = y;
+                }
+            if (first > last)
+                return;
+            rowFrom = first, rowTo = last;
+        }
+        const std::array<uint8_t, 4> texel = texelOf(f);
+        rasterConservativeSpans(
+            q[0], q[1], q[2], kBakeMargin, width, height,
+            [&](int y, int cl, int cr) {
+                const size_t row = canvas.index(0, y);
+                for (size_t i = row + size_t(cl); i <= row + size_t(cr); ++i)
+                    if (!filled[i]) {
+                        std::memcpy(rgba + 4 * i, texel.data(), 4);
+                        filled[i] = 1;
+                    }
+            },
+            rowFrom, rowTo);
+    };
     // Every face in order; a later face's centre texels overwrite earlier faces' edge texels.
     // Crisp bakes also note the faces too thin for the centre rule (below). Bands of rows run on
     // their own threads, each taking every face in order on its rows only: the same texels as one
@@ -314,11 +354,18 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
     const int workers = bandThreads(options.threads, size_t(height));
     const size_t bands = workers > 1 && mesh.faceCount >= kLeastParallelFaces ? size_t(2 * workers) : 1;
     std::vector<std::vector<uint32_t>> thinOf(bands);  // band b notes the thin faces of its share of them
+    std::vector<std::vector<uint32_t>> reachedOf(bands);
     runBands(bands, workers, [&](size_t band) {
         const int rowFrom = int(size_t(height) * band / bands);
         const int rowTo = int(size_t(height) * (band + 1) / bands) - 1;
         const size_t noteFrom = mesh.faceCount * band / bands, noteTo = mesh.faceCount * (band + 1) / bands;
+        // A face reaches rows floor(min y - 1 - margin) to floor(max y + margin) (margin < 0).
+        auto outside = [&](const glm::dvec2 *q) {
+            return bands > 1 && (std::max({q[0].y, q[1].y, q[2].y}) < rowFrom - 1.0 ||
+                                 std::min({q[0].y, q[1].y, q[2].y}) > rowTo + 2.0);
+        };
         glm::dvec2 q[3], points[4] = {};
+        std::vector<uint32_t> &reached = reachedOf[band];  // the faces on the band's rows
         for (size_t f = 0; f < mesh.faceCount; ++f) {
             load(f, q);
             if (crisp && f >= noteFrom && f < noteTo) {
@@ -326,12 +373,20 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
                 if (inradius > 0 && inradius < std::sqrt(2.0) + 2 * kUvRounding)
                     thinOf[band].push_back(uint32_t(f));
             }
-            // A face reaches rows floor(min y - 1 - margin) to floor(max y + margin) (margin < 0).
-            if (bands > 1 && (std::max({q[0].y, q[1].y, q[2].y}) < rowFrom - 1.0 ||
-                              std::min({q[0].y, q[1].y, q[2].y}) > rowTo + 2.0))
+            if (outside(q))
                 continue;
-            paintFace(f, q, rowFrom, rowTo);
+            if (!uniform) {
+                paintFace(f, q, rowFrom, rowTo);
+                continue;
+            }
+            paintCentres(f, q, rowFrom, rowTo);
+            reached.push_back(uint32_t(f));
         }
+        for (uint32_t f : reached) {
+            load(f, q);
+            paintOverlapped(f, q, rowFrom, rowTo);
+        }
+        reached = {};
     });
     std::vector<uint32_t> thin;
     for (const std::vector<uint32_t> &t : thinOf)

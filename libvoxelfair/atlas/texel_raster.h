@@ -177,14 +177,15 @@ inline void rowSpan(const Setup &s, const double reach[3], const RowSolver &r, i
         ++xr;
 }
 
-// Rows y0..y1 of texels x0..x1, each row's span (rowSpan) visited when not empty.
+// Rows y0..y1 of texels x0..x1, each row's span (rowSpan) visited when not empty; only rows
+// rowFrom..rowTo of them (the solver still starts at y0: the same spans as without the limits).
 template <class Inside, class VisitSpan>
 void spans(const Setup &s, const double reach[3], int x0, int x1, int y0, int y1, Inside &&inside,
-           VisitSpan &&visitSpan) {
+           VisitSpan &&visitSpan, int rowFrom = 0, int rowTo = INT32_MAX) {
     double inverse[3];
     edgeInverses(s, inverse);
     const RowSolver solver(s, reach, inverse, x0, x1, y0);
-    for (int y = y0; y <= y1; ++y) {
+    for (int y = std::max(y0, rowFrom); y <= std::min(y1, rowTo); ++y) {
         int xl, xr;
         rowSpan(s, reach, solver, y, inside, xl, xr);
         if (xl <= xr)
@@ -259,9 +260,10 @@ constexpr int kNarrowRows = 4;
 // asks for an overlap of positive size (a square that only touches an edge is left out); margin
 // > 0 gives a safe superset. Near sharp corners the three half-plane tests keep a few squares
 // that only meet the bounding box: conservative, never missing a touched texel.
+// Only rows rowFrom..rowTo are visited (the same spans: a band of rows of a larger raster).
 template <class VisitSpan>
 void rasterConservativeSpans(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double margin, int width, int height,
-                             VisitSpan &&visitSpan) {
+                             VisitSpan &&visitSpan, int rowFrom = 0, int rowTo = INT32_MAX) {
     raster_detail::Setup s;
     if (!raster_detail::setup(a, b, c, s))
         return;
@@ -269,7 +271,7 @@ void rasterConservativeSpans(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double ma
     if (test.x0 > test.x1)
         return;
     if (test.x1 - test.x0 < kNarrowRows) {
-        for (int y = test.y0; y <= test.y1; ++y) {
+        for (int y = std::max(test.y0, rowFrom); y <= std::min(test.y1, rowTo); ++y) {
             int xl, xr;
             raster_detail::testedSpan(test, test.x0, test.x1, y, xl, xr);
             if (xl <= xr)
@@ -277,7 +279,7 @@ void rasterConservativeSpans(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double ma
         }
         return;
     }
-    raster_detail::spans(s, test.reach, test.x0, test.x1, test.y0, test.y1, test, visitSpan);
+    raster_detail::spans(s, test.reach, test.x0, test.x1, test.y0, test.y1, test, visitSpan, rowFrom, rowTo);
 }
 
 // The same texels one by one: visit(x, y).
@@ -295,16 +297,27 @@ void rasterConservative(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double margin,
 // Calls visitSpan(y, x0, x1) for every row y of [0, width) x [0, height) with texels whose centre
 // lies inside the triangle: those are x0..x1. Centres exactly on an edge follow the top-left
 // rule, so the triangles of a planar, non-overlapping mesh cover every centre at most once.
+// Only rows rowFrom..rowTo are visited (the same spans: a band of rows of a larger raster).
 template <class VisitSpan>
-void rasterCentreSpans(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, int width, int height, VisitSpan &&visitSpan) {
+void rasterCentreSpans(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, int width, int height, VisitSpan &&visitSpan,
+                       int rowFrom = 0, int rowTo = INT32_MAX) {
     raster_detail::Setup s;
     if (!raster_detail::setup(a, b, c, s))
         return;
     const raster_detail::CentreTest test(s, width, height);
     if (test.x0 > test.x1)
         return;
+    if (test.x1 - test.x0 < kNarrowRows) {  // as rasterConservativeSpans
+        for (int y = std::max(test.y0, rowFrom); y <= std::min(test.y1, rowTo); ++y) {
+            int xl, xr;
+            raster_detail::testedSpan(test, test.x0, test.x1, y, xl, xr);
+            if (xl <= xr)
+                visitSpan(y, xl, xr);
+        }
+        return;
+    }
     const double reach[3] = {0, 0, 0};
-    raster_detail::spans(s, reach, test.x0, test.x1, test.y0, test.y1, test, visitSpan);
+    raster_detail::spans(s, reach, test.x0, test.x1, test.y0, test.y1, test, visitSpan, rowFrom, rowTo);
 }
 
 // The same texels one by one: visit(x, y).
