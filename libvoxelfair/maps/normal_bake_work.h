@@ -81,7 +81,7 @@ NormalMap bakeNormalMapWork(const NormalBakeMesh &source, const NormalBakeMesh &
     std::unique_ptr<UvFaceGrid> grid;
     std::unique_ptr<SurfaceWalk> walk;
     FaceBands bands, sourceBands;
-    std::vector<uint8_t> state;
+    ByteBuffer state;  // each band clears its own rows (the pages' first touch on its thread)
     {
         std::promise<void> sortedDone;
         const std::shared_future<void> sortedReady = sortedDone.get_future().share();
@@ -109,13 +109,13 @@ NormalMap bakeNormalMapWork(const NormalBakeMesh &source, const NormalBakeMesh &
                                                      source.faceCount, source.vertexCount, opposite.data());
                 break;
             }
-            case 3: out.rgba.resize(texels * 4); break;
+            case 3: out.rgba.resize(texels * 4); break;  // unwritten: the bands write every texel
             case 4:
                 sortedReady.wait();
                 sourceBands = faceBands(sorted->mesh, width, height, kBandRows);
                 break;
             case 5:
-                state.assign(texels, 0);
+                state.resize(texels);
                 bands = faceBands(target, width, height, kBandRows);
                 break;
             default:
@@ -139,6 +139,7 @@ NormalMap bakeNormalMapWork(const NormalBakeMesh &source, const NormalBakeMesh &
         const int r0 = int(band) * kBandRows, r1 = std::min(height, r0 + kBandRows);
         uint32_t *const rgba = reinterpret_cast<uint32_t *>(out.rgba.data());
         uint8_t *const states = state.data();
+        std::memset(states + size_t(r0) * size_t(width), 0, size_t(r1 - r0) * size_t(width));
         // Flat normal (128, 128, 255) on the band's rows (image rows height - r1 .. height - 1 - r0).
         std::fill(rgba + size_t(height - r1) * size_t(width), rgba + size_t(height - r0) * size_t(width),
                   0xFFFF8080u);  // bytes 128, 128, 255, 255
@@ -329,7 +330,7 @@ NormalMap bakeNormalMapWork(const NormalBakeMesh &source, const NormalBakeMesh &
     for (size_t b = 0; b < bandCount; ++b)
         out.texelsBaked += baked[b], out.texelsWithoutSource += flat[b];
 
-    fillNormalGutter(width, height, state, out.rgba, options.dilation * scale,
+    fillNormalGutter(width, height, state.data(), out.rgba.data(), options.dilation * scale,
                      options.blocks && options.level == 0 ? 2 * scale : 0, options.threads);
     return out;
 }

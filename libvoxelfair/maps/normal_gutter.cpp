@@ -24,8 +24,7 @@ constexpr int kMaxBlockSide = 8;  // a map up to 4 times the atlas' side (normal
 // The block of rows x columns texels at (x, y): its unpainted texels take the renormalised mean
 // of its painted ones. Rows, Columns > 0: the block's size known when compiled (unrolled).
 template <int Rows, int Columns>
-void fillBlockOf(int x, int y, int rows, int columns, int width, int height, std::vector<uint8_t> &state,
-                 uint8_t *image) {
+void fillBlockOf(int x, int y, int rows, int columns, int width, int height, uint8_t *state, uint8_t *image) {
     if (Rows > 0)
         rows = Rows, columns = Columns;
     int sum[3] = {0, 0, 0}, n = 0;
@@ -61,7 +60,7 @@ void fillBlockOf(int x, int y, int rows, int columns, int width, int height, std
 // The side x side block at (x, y), cut by the image's edges; Side > 0: side is Side, and a block
 // inside the image is done unrolled (2: the common block).
 template <int Side>
-void fillBlock(int x, int y, int side, int width, int height, std::vector<uint8_t> &state, uint8_t *image) {
+void fillBlock(int x, int y, int side, int width, int height, uint8_t *state, uint8_t *image) {
     if (Side > 0 && x + Side <= width && y + Side <= height)
         fillBlockOf<Side, Side>(x, y, Side, Side, width, height, state, image);
     else
@@ -70,10 +69,9 @@ void fillBlock(int x, int y, int side, int width, int height, std::vector<uint8_
 
 }  // namespace
 
-void fillNormalGutter(int width, int height, std::vector<uint8_t> &state, std::vector<uint8_t> &rgba, int rings,
-                      int blockSide, int threads) {
-    const uint8_t *const painted = state.data();
-    uint8_t *const image = rgba.data();
+void fillNormalGutter(int width, int height, uint8_t *state, uint8_t *rgba, int rings, int blockSide, int threads) {
+    const uint8_t *const painted = state;
+    uint8_t *const image = rgba;
     dilateTexels(width, height, state, rings, threads, [painted, image, width, height](int x, int y) {
         // The sums of the decoded neighbours, (2 c - 255) / 255 each, up to its scale: integers,
         // summed as bytes in the lanes of two words (red and blue in 16-bit halves of one, green

@@ -13,11 +13,9 @@
 #pragma once
 
 #include <cstdint>
-#include <vector>
 
 namespace voxelfair {
 
-void fillNormalGutter(int width, int height, std::vector<uint8_t> &state, std::vector<uint8_t> &rgba, int rings,
-                      int blockSide, int threads);
+void fillNormalGutter(int width, int height, uint8_t *state, uint8_t *rgba, int rings, int blockSide, int threads);
 
 }  // namespace voxelfair

@@ -25,7 +25,7 @@ namespace voxelfair {
 constexpr uint8_t kTexelPainted = 1;
 
 template <class Fill>
-void dilateTexels(int width, int height, std::vector<uint8_t> &state, int rings, int threads, Fill &&fill) {
+void dilateTexels(int width, int height, uint8_t *state, int rings, int threads, Fill &&fill) {
     constexpr int kBandRows = 64;
     const size_t bands = size_t((height + kBandRows - 1) / kBandRows);
     const size_t w = size_t(width);

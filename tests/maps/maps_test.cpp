@@ -318,8 +318,8 @@ TEST(NormalBake, TheMapIsTheSameOnAnyNumberOfThreads) {
 
 // Aligned 2 x 2 blocks of a width x height image (rows top down, RGBA) that mix texels `filled`
 // says are painted with texels it says are not.
-template <class Filled>
-int mixedBlocks(const std::vector<uint8_t> &rgba, int width, int height, Filled &&filled, int side = 2) {
+template <class Bytes, class Filled>
+int mixedBlocks(const Bytes &rgba, int width, int height, Filled &&filled, int side = 2) {
     int mixed = 0;
     for (int y = 0; y + side - 1 < height; y += side)
         for (int x = 0; x + side - 1 < width; x += side) {
