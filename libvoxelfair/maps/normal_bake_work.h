@@ -98,7 +98,7 @@ NormalMap bakeNormalMapWork(const NormalBakeMesh &source, const NormalBakeMesh &
                 const std::vector<uint32_t> original =
                     buildEdgeAdjacency(source.triangles, source.faceCount, source.vertexCount).opposite;
                 sortedReady.wait();
-                std::vector<uint32_t> opposite(original.size());
+                std::vector<uint32_t, DefaultInitAllocator<uint32_t>> opposite(original.size());  // written in full
                 const uint32_t *const to = sorted->sortedFace.data();
                 for (size_t f = 0; f < source.faceCount; ++f)
                     for (size_t k = 0; k < 3; ++k) {

@@ -12,7 +12,7 @@ namespace voxelfair {
 
 SurfaceWalk::SurfaceWalk(const glm::vec3 *positions, const glm::vec3 *normals, const uint32_t *triangles,
                          size_t faceCount, size_t vertexCount, const uint32_t *givenOpposite)
-    : faces_(faceCount), cornerNormals_(3 * faceCount, glm::vec3(0.0f)), positions_(positions), triangles_(triangles),
+    : faces_(faceCount), cornerNormals_(3 * faceCount), positions_(positions), triangles_(triangles),
       vertexFaceStart_(vertexCount + 1, 0), vertexFaces_(3 * faceCount) {
     for (size_t c = 0; c < 3 * faceCount; ++c)
         ++vertexFaceStart_[triangles[c] + 1];
@@ -49,8 +49,7 @@ SurfaceWalk::SurfaceWalk(const glm::vec3 *positions, const glm::vec3 *normals, c
         static_assert(kNoOpposite == UINT32_MAX, "project() tests borders against UINT32_MAX");
         for (int k = 0; k < 3; ++k) {
             face.opposite[k] = opposite[3 * f + size_t(k)];
-            if (normals)
-                cornerNormals_[3 * f + size_t(k)] = normals[triangles[3 * f + size_t(k)]];
+            cornerNormals_[3 * f + size_t(k)] = normals ? normals[triangles[3 * f + size_t(k)]] : glm::vec3(0.0f);
         }
     }
 }
@@ -136,7 +135,9 @@ SurfaceWalk::Hit SurfaceWalk::closestAround(const glm::vec3 &p, uint32_t face, c
             const uint32_t v = triangles_[3 * size_t(centre) + size_t(k)];
             for (uint32_t i = vertexFaceStart_[v]; i < vertexFaceStart_[v + 1]; ++i) {
                 const uint32_t f = vertexFaces_[i];
-                if (f == best.face || glm::dot(faces_[f].normal, facing) <= 0.0f || measured(f))
+                // The stamp first: a face seen before in this call (the best one included) is
+                // not read again; a face facing away is stamped too (it fails again).
+                if (measured(f) || glm::dot(faces_[f].normal, facing) <= 0.0f)
                     continue;
                 const glm::vec3 weights = closest(f);
                 q = point(f, weights);

@@ -20,6 +20,8 @@
 // improves (the last triangle itself only if it faces that way too).
 #pragma once
 
+#include "base/default_init_allocator.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -111,11 +113,13 @@ public:
 
 private:
     Hit closestAround(const glm::vec3 &p, uint32_t face, const glm::vec3 &facing, Marks &marks) const;
-    std::vector<Face> faces_;
-    std::vector<glm::vec3> cornerNormals_;  // 3 per face
+    // Written in full by the constructor: not zeroed first (base/default_init_allocator.h).
+    std::vector<Face, DefaultInitAllocator<Face>> faces_;
+    std::vector<glm::vec3, DefaultInitAllocator<glm::vec3>> cornerNormals_;  // 3 per face
     const glm::vec3 *positions_;
     const uint32_t *triangles_;
-    std::vector<uint32_t> vertexFaceStart_, vertexFaces_;  // faces around each vertex (CSR)
+    std::vector<uint32_t> vertexFaceStart_;  // faces around each vertex (CSR)
+    std::vector<uint32_t, DefaultInitAllocator<uint32_t>> vertexFaces_;
 };
 
 }  // namespace voxelfair
