@@ -129,6 +129,15 @@ SurfaceWalk::Hit SurfaceWalk::closestAround(const glm::vec3 &p, uint32_t face, c
         stamp[f] = generation;
         return false;
     };
+    // A face whose plane is farther from p than the best distance cannot win (its closest point
+    // lies on that plane): it is left after the plane's distance, stamped, without its closest
+    // point. Skipped only beyond a margin far above the rounding of either computation
+    // (2^-12 of p's largest coordinate plus 1/1000 of the distance, where the floats lose a few
+    // 2^-24 of the coordinates, the normal's direction a few 2^-24 over the sine of the
+    // triangle's smallest angle), so every skipped face's computed distance would not have been
+    // smaller either: the same answers. The best distance only decreases, so it never wins later.
+    const float tolerance = 0x1p-12f * (std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) + 1.0f);
+    float reach = std::sqrt(bestDistance) * 1.001f + tolerance;  // INFINITY while none faces the way
     for (int round = 0; round < 16; ++round) {
         const uint32_t centre = best.face;
         for (int k = 0; k < 3; ++k) {
@@ -137,13 +146,17 @@ SurfaceWalk::Hit SurfaceWalk::closestAround(const glm::vec3 &p, uint32_t face, c
                 const uint32_t f = vertexFaces_[i];
                 // The stamp first: a face seen before in this call (the best one included) is
                 // not read again; a face facing away is stamped too (it fails again).
-                if (measured(f) || glm::dot(faces_[f].normal, facing) <= 0.0f)
+                const Face &record = faces_[f];
+                if (measured(f) || glm::dot(record.normal, facing) <= 0.0f ||
+                    std::abs(glm::dot(p - record.origin, record.normal)) > reach)
                     continue;
                 const glm::vec3 weights = closest(f);
                 q = point(f, weights);
                 const float d = glm::dot(q - p, q - p);
-                if (d < bestDistance)
+                if (d < bestDistance) {
                     bestDistance = d, best = {f, weights};
+                    reach = std::sqrt(bestDistance) * 1.001f + tolerance;
+                }
             }
         }
         if (best.face == centre)
