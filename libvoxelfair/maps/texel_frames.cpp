@@ -8,6 +8,22 @@
 namespace voxelfair {
 
 namespace {
+// Bit j of an 8-bit mask as byte j (0 or 1) of a little-endian word: a solve's `solved` lanes
+// stored at once.
+struct SpreadBits {
+    uint64_t word[256];
+    constexpr SpreadBits() : word() {
+        for (int mask = 0; mask < 256; ++mask)
+            for (int j = 0; j < 8; ++j)
+                word[mask] |= uint64_t(mask >> j & 1) << (8 * j);
+    }
+};
+constexpr SpreadBits kSpreadBits;
+inline void storeSolved(uint8_t *solved, int mask, size_t lanes) {
+    const uint64_t word = kSpreadBits.word[mask];
+    std::memcpy(solved, &word, lanes);
+}
+
 // (c + 1) / 2 in 0..255 (NaN -> 0), as solveQuad's encode does it.
 int encodeLane(float c) {
     const float v = c * 127.5f + 128.0f, low = v > 0.0f ? v : 0.0f;
@@ -111,8 +127,7 @@ VOXELFAIR_AVX2 void solveOcts(const TargetFrame &fr, TexelBatch &b) {
             _mm256_or_si256(encode8(x, scale), _mm256_slli_epi32(encode8(y, scale), 8)),
             _mm256_or_si256(_mm256_slli_epi32(encode8(z, scale), 16), _mm256_set1_epi32(int(0xFF000000u))));
         _mm256_storeu_si256(reinterpret_cast<__m256i *>(&b.colour[k]), colour);
-        for (int j = 0; j < 8; ++j)
-            b.solved[k + size_t(j)] = uint8_t(ok >> j & 1);
+        storeSolved(&b.solved[k], ok, 8);
     }
 }
 #undef VOXELFAIR_AVX2
@@ -138,8 +153,7 @@ void writeTexelBatch(const TargetFrame &frame, TexelBatch &b, uint8_t *states, u
             int ok = 0;
             _mm_storeu_si128(reinterpret_cast<__m128i *>(&b.colour[k]),
                              solveQuad(lanes, _mm_loadu_ps(&b.l1[k]), _mm_loadu_ps(&b.l2[k]), n, ok));
-            for (int j = 0; j < 4; ++j)
-                b.solved[k + size_t(j)] = uint8_t(ok >> j & 1);
+            storeSolved(&b.solved[k], ok, 4);
         }
     }
 #else
