@@ -2,6 +2,7 @@
 
 #include "atlas/texel_raster.h"
 #include "base/parallel_bands.h"
+#include "base/short_fill.h"
 #include "base/error.h"
 
 #include <algorithm>
@@ -308,7 +309,7 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
                 const size_t row = canvas.index(0, y);
                 for (size_t i = row + size_t(zl); i <= row + size_t(zr); ++i)
                     std::memcpy(rgba + 4 * i, texel.data(), 4);
-                std::memset(filled + row + size_t(zl), 1, size_t(zr) - size_t(zl) + 1);
+                fillBytes(filled + row + size_t(zl), 1, size_t(zr) - size_t(zl) + 1);
             },
             rowFrom, rowTo);
     };

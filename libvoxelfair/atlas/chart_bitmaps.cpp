@@ -1,6 +1,7 @@
 #include "atlas/chart_bitmaps.h"
 
 #include "base/parallel_bands.h"
+#include "base/short_fill.h"
 
 #include <algorithm>
 
@@ -35,7 +36,7 @@ void rasterizeChartBitmaps(const AtlasCharts &charts, ChartMasks &coarse, int64_
             uint8_t *bits = out.bits.data() + out.first[c];
             for (size_t i = coarse.spanFirst[c]; i < coarse.spanFirst[c + 1]; i += 3) {
                 uint8_t *row = bits + size_t(coarse.spans[i]) * size_t(m.width);
-                std::fill(row + coarse.spans[i + 1], row + coarse.spans[i + 2] + 1, uint8_t(1));
+                fillBytes(row + coarse.spans[i + 1], 1, size_t(coarse.spans[i + 2]) + 1 - size_t(coarse.spans[i + 1]));
             }
             // The room the packer will take: the bitmap's blocks, not the rows' spans.
             const int16_t *l = m.rowLeft(coarse.profiles), *r = m.rowRight(coarse.profiles);
