@@ -5,6 +5,7 @@
 #include "atlas/edge_adjacency.h"
 #include "atlas/seed_plane.h"
 #include "atlas/texel_raster.h"
+#include "base/parallel_bands.h"
 
 #include <algorithm>
 #include <cmath>
@@ -50,6 +51,9 @@ void radixSortByKey(std::vector<uint32_t> &items, std::vector<uint32_t> &keys) {
     }
 }
 
+// Meshes with fewer faces are charted on one thread: starting a second would cost more.
+constexpr size_t kLeastParallelFaces = 4096;
+
 }  // namespace
 
 double AtlasCharts::projectedArea() const {
@@ -77,52 +81,59 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
     using FaceNormals = ChartFaceNormals;
     std::vector<FaceNormals> normals(faceCount, FaceNormals{glm::vec3(0.0f), glm::vec3(0.0f)});
     std::vector<uint8_t> degenerate(faceCount, 0);
-    for (size_t f = 0; f < faceCount; ++f) {
-        const uint32_t *t = mesh.triangles + 3 * f;
-        const glm::dvec3 p0 = mesh.positions[t[0]], p1 = mesh.positions[t[1]], p2 = mesh.positions[t[2]];
-        if (!finite(glm::vec3(p0)) || !finite(glm::vec3(p1)) || !finite(glm::vec3(p2))) {
-            degenerate[f] = 1;
-            ++out.nonFiniteFaces;
-            continue;
-        }
-        const glm::dvec3 cross = glm::cross(p1 - p0, p2 - p0);
-        const double longest2 =
-            std::max({glm::dot(p1 - p0, p1 - p0), glm::dot(p2 - p0, p2 - p0), glm::dot(p2 - p1, p2 - p1)});
-        const double length = glm::length(cross);
-        if (!(length > 1e-6 * longest2) || !std::isfinite(length)) {
-            degenerate[f] = 1;
-            continue;
-        }
-        FaceNormals &n = normals[f];
-        n.geometric = n.cone = glm::vec3(cross / length);
-        if (mesh.faceNormals) {
-            const glm::vec3 given = mesh.faceNormals[f];
-            const float len = glm::length(given);
-            if (finite(given) && len > 0 && std::isfinite(len) && glm::dot(given / len, n.geometric) >= cone)
-                n.cone = given / len;
-            else
-                ++out.ignoredNormals;
-        }
-    }
-
-    // Seed order: largest |component| first, face order among equals. For positive floats the
-    // bit pattern orders like the value, so ~bits sorts descending.
     std::vector<uint32_t> order, keys;
-    order.reserve(faceCount);
-    keys.reserve(faceCount);
-    for (size_t f = 0; f < faceCount; ++f) {
-        if (degenerate[f])
-            continue;
-        const glm::vec3 &n = normals[f].cone;
-        const float priority = std::max({std::abs(n.x), std::abs(n.y), std::abs(n.z)});
-        uint32_t bits;
-        std::memcpy(&bits, &priority, sizeof bits);
-        order.push_back(uint32_t(f));
-        keys.push_back(~bits);
-    }
-    radixSortByKey(order, keys);
+    // The normals and the seed order (band 0), and the edge adjacency (band 1), which does not
+    // depend on them: on two threads for larger meshes.
+    EdgeAdjacency adjacency;
+    runBands(2, faceCount >= kLeastParallelFaces ? bandThreads(options.threads, 2) : 1, [&](size_t band) {
+        if (band == 1) {
+            adjacency = buildEdgeAdjacency(mesh.triangles, faceCount, mesh.vertexCount);
+            return;
+        }
+        for (size_t f = 0; f < faceCount; ++f) {
+            const uint32_t *t = mesh.triangles + 3 * f;
+            const glm::dvec3 p0 = mesh.positions[t[0]], p1 = mesh.positions[t[1]], p2 = mesh.positions[t[2]];
+            if (!finite(glm::vec3(p0)) || !finite(glm::vec3(p1)) || !finite(glm::vec3(p2))) {
+                degenerate[f] = 1;
+                ++out.nonFiniteFaces;
+                continue;
+            }
+            const glm::dvec3 cross = glm::cross(p1 - p0, p2 - p0);
+            const double longest2 =
+                std::max({glm::dot(p1 - p0, p1 - p0), glm::dot(p2 - p0, p2 - p0), glm::dot(p2 - p1, p2 - p1)});
+            const double length = glm::length(cross);
+            if (!(length > 1e-6 * longest2) || !std::isfinite(length)) {
+                degenerate[f] = 1;
+                continue;
+            }
+            FaceNormals &n = normals[f];
+            n.geometric = n.cone = glm::vec3(cross / length);
+            if (mesh.faceNormals) {
+                const glm::vec3 given = mesh.faceNormals[f];
+                const float len = glm::length(given);
+                if (finite(given) && len > 0 && std::isfinite(len) && glm::dot(given / len, n.geometric) >= cone)
+                    n.cone = given / len;
+                else
+                    ++out.ignoredNormals;
+            }
+        }
 
-    EdgeAdjacency adjacency = buildEdgeAdjacency(mesh.triangles, faceCount, mesh.vertexCount);
+        // Seed order: largest |component| first, face order among equals. For positive floats the
+        // bit pattern orders like the value, so ~bits sorts descending.
+        order.reserve(faceCount);
+        keys.reserve(faceCount);
+        for (size_t f = 0; f < faceCount; ++f) {
+            if (degenerate[f])
+                continue;
+            const glm::vec3 &n = normals[f].cone;
+            const float priority = std::max({std::abs(n.x), std::abs(n.y), std::abs(n.z)});
+            uint32_t bits;
+            std::memcpy(&bits, &priority, sizeof bits);
+            order.push_back(uint32_t(f));
+            keys.push_back(~bits);
+        }
+        radixSortByKey(order, keys);
+    });
     if (adjacency.borderEdges > faceCount) {
         // More border edges than faces: the mesh stores its corners unshared. Match edges by
         // position instead (vertex ids still tell the UV seams apart).

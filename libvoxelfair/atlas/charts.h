@@ -53,6 +53,9 @@ struct ChartOptions {
     // overlap none of its faces there. 0 turns merging off.
     size_t mergeFaces = 8;
     float mergeCosine = 0.5f;
+    // Threads (0: one per hardware thread): the faces' edge adjacency is built beside their
+    // normals and seed order on a second one. The charts are the same for any count.
+    int threads = 0;
 };
 
 struct AtlasCharts {
