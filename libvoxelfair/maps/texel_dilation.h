@@ -24,6 +24,18 @@ namespace voxelfair {
 
 constexpr uint8_t kTexelPainted = 1;
 
+// The index of the lowest set bit of a non-zero word.
+inline int lowestSetBit(uint64_t word) {
+#if defined(__GNUC__) || defined(__clang__)
+    return __builtin_ctzll(word);
+#else
+    int i = 0;
+    while ((word >> i & 1) == 0)
+        ++i;
+    return i;
+#endif
+}
+
 template <class Fill>
 void dilateTexels(int width, int height, uint8_t *state, int rings, int threads, Fill &&fill) {
     constexpr int kBandRows = 64;
@@ -49,16 +61,18 @@ void dilateTexels(int width, int height, uint8_t *state, int rings, int threads,
                     touched[x + 1] = uint8_t((below[x] | row[x] | above[x]) & kTexelPainted);
                 for (size_t x = 0; x < n; ++x)
                     candidates[x] = uint8_t((touched[x] | touched[x + 1] | touched[x + 2]) & ~row[x] & kTexelPainted);
-                for (size_t x = 0; x < w; x += 8) {
-                    uint64_t eight = 0;  // skip runs of 8 non-candidates at once
-                    if (x + 8 <= w)
-                        std::memcpy(&eight, &candidate[x], 8);
-                    if (x + 8 <= w && eight == 0)
-                        continue;
-                    for (size_t i = x; i < std::min(x + 8, w); ++i)
-                        if (candidate[i])
-                            ring[b].push_back(uint32_t(y) << 16 | uint32_t(i));
+                // 8 candidates (bytes 0 or 1) at a time, the set ones in order (their lowest bit
+                // first: byte i of the little-endian word is texel x + i).
+                size_t x = 0;
+                for (; x + 8 <= w; x += 8) {
+                    uint64_t eight;
+                    std::memcpy(&eight, &candidate[x], 8);
+                    for (; eight != 0; eight &= eight - 1)
+                        ring[b].push_back(uint32_t(y) << 16 | uint32_t(x + size_t(lowestSetBit(eight) / 8)));
                 }
+                for (; x < w; ++x)
+                    if (candidate[x])
+                        ring[b].push_back(uint32_t(y) << 16 | uint32_t(x));
             }
         });
         bool any = false;
