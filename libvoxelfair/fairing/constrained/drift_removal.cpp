@@ -65,31 +65,57 @@ inline float cornerListMean(const FairingState<kQuads> &s, const float *values, 
     return sum * weight[s.rank[v]];
 }
 
+#ifdef VOXELFAIR_SSE2
+// A block's four sums `own` + u0 + ... + u(kUsed - 1), side by side, from its padded lists `n`.
+template <int kUsed>
+inline __m128 blockSum(const float *values, const uint32_t *n, __m128 sum) {
+    for (uint32_t i = 0; i < uint32_t(kUsed); ++i)
+        sum = _mm_add_ps(sum, _mm_setr_ps(values[n[i]], values[n[kRegularValence + i]],
+                                          values[n[2 * kRegularValence + i]], values[n[3 * kRegularValence + i]]));
+    return sum;
+}
+#endif
+
 // One Jacobi round on the regular blocks [firstBlock, lastBlock): each slot's value and its
 // neighbours' (the padded lists of sweep_layout.cpp, turned into slots), summed in the
 // corner list's order, times its weight, into `spare`.
 inline void averageRegularBlocks(const float *values, float *spare, const float *weight, const uint32_t *neighbours,
-                                 const uint8_t *regular, size_t firstBlock, size_t lastBlock) {
+                                 const uint8_t *regular, const uint8_t *valence, size_t firstBlock,
+                                 size_t lastBlock) {
     for (size_t block = firstBlock; block < lastBlock; ++block) {
         if (!regular[block])
             continue;
+        // (The lists past the block's most neighbours hold the zero slot alone: left out.)
+        const uint32_t used = valence[block];
 #ifdef VOXELFAIR_SSE2
-        // The four slots' sums side by side, each in the order below.
-        const uint32_t *n = neighbours + kRegularValence * 4 * block;
-        auto gather = [&](uint32_t i) {
-            return _mm_setr_ps(values[n[i]], values[n[kRegularValence + i]], values[n[2 * kRegularValence + i]],
-                               values[n[3 * kRegularValence + i]]);
-        };
-        __m128 sum = _mm_load_ps(values + 4 * block);
-        for (uint32_t i = 0; i < kRegularValence; ++i)
-            sum = _mm_add_ps(sum, gather(i));
+        // The four slots' sums side by side, each in the order below (unrolled for each count).
+        const uint32_t *const n = neighbours + kRegularValence * 4 * block;
+        const __m128 own = _mm_load_ps(values + 4 * block);
+        __m128 sum;
+        switch (used) {
+        case 0:
+        case 1:
+        case 2:
+        case 3:
+            sum = blockSum<3>(values, n, own);
+            break;
+        case 4:
+            sum = blockSum<4>(values, n, own);
+            break;
+        case 5:
+            sum = blockSum<5>(values, n, own);
+            break;
+        default:
+            sum = blockSum<6>(values, n, own);
+            break;
+        }
         _mm_store_ps(spare + 4 * block, _mm_mul_ps(sum, _mm_load_ps(weight + 4 * block)));
         continue;
 #endif
         for (size_t slot = 4 * block; slot < 4 * block + 4; ++slot) {
             const uint32_t *n = neighbours + kRegularValence * slot;
             float sum = values[slot];
-            for (uint32_t i = 0; i < kRegularValence; ++i)
+            for (uint32_t i = 0; i < used; ++i)
                 sum += values[n[i]];
             spare[slot] = sum * weight[slot];
         }
@@ -148,7 +174,7 @@ VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds, int wid
     const uint32_t *const start = s.vertexStart, *const next = s.vertexNext, *const rank = s.rank;
     const uint32_t *const vertexAt = s.vertexAt;
     uint32_t *const neighbours = s.slotNeighbours;
-    const uint8_t *const regular = s.regularBlock;
+    const uint8_t *const regular = s.regularBlock, *const valence = s.blockValence;
     const VertexKind *const kind = s.kind;
     Offset *const offset = s.offset;
     // n . d per vertex (0 for those that do not move), by slot, averaged with the neighbours'
@@ -206,7 +232,7 @@ VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds, int wid
                         spare[rank[others[i]]] = cornerListMean(s, values, weight, others[i]);
                     return;
                 }
-                averageRegularBlocks(values, spare, weight, neighbours, regular, chunk * kBlockGrain,
+                averageRegularBlocks(values, spare, weight, neighbours, regular, valence, chunk * kBlockGrain,
                                      std::min(blocks, (chunk + 1) * kBlockGrain));
             });
             std::swap(values, spare);
