@@ -36,6 +36,10 @@ void run(constrained::FairingState<kQuads> &s) {
     findVertexKinds(s);
     buildLevels(s);
     buildSlots(s);
+    // Step 5's set-up reads nothing the last pass's sweeps and feature fit write: it runs beside
+    // them, on a helper thread (removeDrift waits for it).
+    const int driftRounds = s.options.driftRounds, driftWideRounds = s.options.driftWideRounds;
+    auto driftSetup = [&s, driftRounds, driftWideRounds](size_t) { prepareDrift(s, driftRounds, driftWideRounds); };
     for (int pass = 0; pass < s.options.passes; ++pass) {
         if (pass > 0)
             findFairedNormals(s);
@@ -48,13 +52,17 @@ void run(constrained::FairingState<kQuads> &s) {
         lendAnchorNormals(s);
         fitFreeVertices(s);
         holdAnchors(s);
+        if (pass + 1 == s.options.passes && driftRounds > 0) {
+            takeDriftArrays(s, driftRounds, driftWideRounds);
+            s.threads.startAside(driftSetup);
+        }
         for (int i = 0; i < s.options.positionSweeps; ++i)
             sweep(s, i % 2 == 0);
         fitFeatureVertices(s);
         ++s.report.passes;
     }
-    if (s.options.passes > 0 && s.options.driftRounds > 0)
-        removeDrift(s, s.options.driftRounds, s.options.driftWideRounds);
+    if (s.options.passes > 0 && driftRounds > 0)
+        removeDrift(s, driftRounds, driftWideRounds);
     finish(s);
 }
 

@@ -67,18 +67,20 @@ inline float cornerListMean(const FairingState<kQuads> &s, const float *values, 
 
 #ifdef VOXELFAIR_SSE2
 // A block's four sums `own` + u0 + ... + u(kUsed - 1), side by side, from its padded lists `n`.
-template <int kUsed>
+template <int kUsed, int kShift>
 inline __m128 blockSum(const float *values, const uint32_t *n, __m128 sum) {
     for (uint32_t i = 0; i < uint32_t(kUsed); ++i)
-        sum = _mm_add_ps(sum, _mm_setr_ps(values[n[i]], values[n[kRegularValence + i]],
-                                          values[n[2 * kRegularValence + i]], values[n[3 * kRegularValence + i]]));
+        sum = _mm_add_ps(sum, _mm_setr_ps(values[n[i] >> kShift], values[n[kRegularValence + i] >> kShift],
+                                          values[n[2 * kRegularValence + i] >> kShift],
+                                          values[n[3 * kRegularValence + i] >> kShift]));
     return sum;
 }
 #endif
 
 // One Jacobi round on the regular blocks [firstBlock, lastBlock): each slot's value and its
-// neighbours' (the padded lists of sweep_layout.cpp, turned into slots), summed in the
+// neighbours' (the padded lists of sweep_layout.cpp: slots times 2^kShift), summed in the
 // corner list's order, times its weight, into `spare`.
+template <int kShift>
 inline void averageRegularBlocks(const float *values, float *spare, const float *weight, const uint32_t *neighbours,
                                  const uint8_t *regular, const uint8_t *valence, size_t firstBlock,
                                  size_t lastBlock) {
@@ -97,16 +99,16 @@ inline void averageRegularBlocks(const float *values, float *spare, const float 
         case 1:
         case 2:
         case 3:
-            sum = blockSum<3>(values, n, own);
+            sum = blockSum<3, kShift>(values, n, own);
             break;
         case 4:
-            sum = blockSum<4>(values, n, own);
+            sum = blockSum<4, kShift>(values, n, own);
             break;
         case 5:
-            sum = blockSum<5>(values, n, own);
+            sum = blockSum<5, kShift>(values, n, own);
             break;
         default:
-            sum = blockSum<6>(values, n, own);
+            sum = blockSum<6, kShift>(values, n, own);
             break;
         }
         _mm_store_ps(spare + 4 * block, _mm_mul_ps(sum, _mm_load_ps(weight + 4 * block)));
@@ -116,7 +118,7 @@ inline void averageRegularBlocks(const float *values, float *spare, const float 
             const uint32_t *n = neighbours + kRegularValence * slot;
             float sum = values[slot];
             for (uint32_t i = 0; i < used; ++i)
-                sum += values[n[i]];
+                sum += values[n[i] >> kShift];
             spare[slot] = sum * weight[slot];
         }
     }
@@ -168,30 +170,118 @@ void averageNearMarks(const FairingState<kQuads> &s, const float *weight, const 
     }
 }
 
+// `count` rounds on `values` (by slot; `spare` as large), the result in `values`; run(chunks,
+// chunk) calls chunk(c) for each c (on the stage's threads, or one after another).
+// The same sums in the same order as over each vertex's corner list: a regular block's lists
+// (sweep_layout.cpp) are that list padded with the zero slot, whose 0 adds nothing.
+// Each round's slots are independent (Jacobi): the blocks and the other vertices split
+// between the threads, the same sums either way. kShift 4 while the lists still hold the
+// sweeps' byte offsets, 0 once they hold slots.
+template <int kShift, bool kQuads, class Run>
+void averageRounds(const FairingState<kQuads> &s, float *&values, float *&spare, int count, Run &&run) {
+    const DriftArrays &d = s.drift;
+    const size_t blocks = s.freeSlots / 4, otherCount = d.otherCount;
+    const uint32_t *const neighbours = s.slotNeighbours, *const others = d.others, *const rank = s.rank;
+    const uint8_t *const regular = s.regularBlock, *const valence = s.blockValence;
+    const float *const weight = d.weight;
+    static_assert(sizeof(Offset) == size_t(1) << 4, "byte offsets to slots");
+    // (One run a round: the blocks' chunks, then the other vertices'.)
+    const size_t blockChunks = (blocks + kBlockGrain - 1) / kBlockGrain;
+    const size_t chunks = blockChunks + (otherCount + kBlockGrain - 1) / kBlockGrain;
+    for (int round = 0; round < count; ++round) {
+        run(chunks, [&, values, spare](size_t chunk) {
+            if (chunk >= blockChunks) {
+                const size_t first = (chunk - blockChunks) * kBlockGrain;
+                for (size_t i = first; i < std::min(otherCount, first + kBlockGrain); ++i)
+                    spare[rank[others[i]]] = cornerListMean(s, values, weight, others[i]);
+                return;
+            }
+            averageRegularBlocks<kShift>(values, spare, weight, neighbours, regular, valence, chunk * kBlockGrain,
+                                         std::min(blocks, (chunk + 1) * kBlockGrain));
+        });
+        std::swap(values, spare);
+    }
+}
+
+template <bool kQuads>
+void takeDriftArrays(FairingState<kQuads> &s, int rounds, int wideRounds) {
+    const size_t slots = s.zeroSlot + 1;
+    DriftArrays &d = s.drift;
+    d.along = s.scratch.template take<float>(slots);
+    d.smooth = s.scratch.template take<float>(slots);
+    d.weight = s.scratch.template take<float>(slots);
+    d.others = s.scratch.template take<uint32_t>(s.V);
+    d.otherCount = 0;
+    if (wideRounds > rounds) {
+        d.local = s.scratch.template take<float>(slots);
+        d.near = s.scratch.template take<float>(slots);
+        d.nearSpare = s.scratch.template take<float>(slots);
+    }
+}
+
+template <bool kQuads>
+VOXELFAIR_NOINLINE void prepareDrift(FairingState<kQuads> &s, int rounds, int wideRounds) {
+    const size_t V = s.V, slots = s.zeroSlot + 1;
+    const uint32_t *const start = s.vertexStart, *const next = s.vertexNext, *const rank = s.rank;
+    const uint8_t *const regular = s.regularBlock;
+    const VertexKind *const kind = s.kind;
+    DriftArrays &d = s.drift;
+    // Empty slots and the zero slot have weight 0 and stay 0; n . d is 0 for those that do not move.
+    float *const weight = d.weight;
+    std::fill(d.along, d.along + slots, 0.0f);
+    std::fill(d.smooth, d.smooth + slots, 0.0f);
+    std::fill(weight, weight + slots, 0.0f);
+    // The vertices that are not free, or free outside regular blocks, in vertex order.
+    uint32_t *const others = d.others;
+    size_t otherCount = 0;
+    for (size_t v = 0; v < V; ++v) {
+        const uint32_t slot = rank[v];
+        weight[slot] = 1.0f / float(1 + start[v + 1] - start[v]);
+        if (!isFree(kind[v]) || !regular[slot / 4])
+            others[otherCount++] = uint32_t(v);
+    }
+    d.otherCount = otherCount;
+    if (wideRounds <= rounds)
+        return;
+    // Where the shape turns (see above), by slot; the zero slot stays 0.
+    float *near = d.near, *spare = d.nearSpare;
+    std::fill(near, near + slots, 0.0f);
+    std::fill(spare, spare + slots, 0.0f);
+    const VertexNormal *const vertexNormal = s.vertexNormal;
+    const float turnCos = std::cos(glm::radians(kTurnDegrees));
+    const float latticeCos = std::cos(glm::radians(kLatticeDegrees));
+    std::vector<uint32_t> marked;
+    for (size_t v = 0; v < V; ++v) {
+        const glm::vec3 n = vertexNormal[v].n, a = glm::abs(n);
+        bool turns = !isFree(kind[v]) || std::max(a.x, std::max(a.y, a.z)) > latticeCos;
+        for (uint32_t j = start[v]; !turns && j < start[v + 1]; ++j)
+            turns = glm::dot(n, vertexNormal[next[j]].n) < turnCos;
+        near[rank[v]] = turns ? 1.0f : 0.0f;
+        if (turns)
+            marked.push_back(uint32_t(v));
+    }
+    // (Beside the sweeps: their byte offsets still in the lists, the rounds one after another.)
+    averageNearMarks(s, weight, marked, rounds, near, spare, [&](float *&values, float *&other, int count) {
+        averageRounds<4>(s, values, other, count, [](size_t chunks, auto &&chunk) {
+            for (size_t c = 0; c < chunks; ++c)
+                chunk(c);
+        });
+    });
+    d.near = near;
+}
+
 template <bool kQuads>
 VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds, int wideRounds) {
-    const size_t V = s.V, slots = s.zeroSlot + 1, blocks = s.freeSlots / 4;
-    const uint32_t *const start = s.vertexStart, *const next = s.vertexNext, *const rank = s.rank;
+    const size_t V = s.V, slots = s.zeroSlot + 1;
     const uint32_t *const vertexAt = s.vertexAt;
     uint32_t *const neighbours = s.slotNeighbours;
-    const uint8_t *const regular = s.regularBlock, *const valence = s.blockValence;
-    const VertexKind *const kind = s.kind;
     Offset *const offset = s.offset;
-    // n . d per vertex (0 for those that do not move), by slot, averaged with the neighbours'
-    // (Jacobi). Empty slots and the zero slot have weight 0 and stay 0.
-    float *along = s.scratch.template take<float>(slots), *smooth = s.scratch.template take<float>(slots);
-    float *const weight = s.scratch.template take<float>(slots);
-    s.threads.forRanges(slots, 4 * kBlockGrain, [along, smooth, weight](size_t first, size_t last) {
-        std::fill(along + first, along + last, 0.0f);
-        std::fill(smooth + first, smooth + last, 0.0f);
-        std::fill(weight + first, weight + last, 0.0f);
-    });
-    // The vertices that are not free, or free outside regular blocks.
-    uint32_t *const others = s.scratch.template take<uint32_t>(V);
-    size_t otherCount = 0;
+    StageThreads &threads = s.threads;
+    threads.joinAside();  // prepareDrift, beside the last pass's sweeps
+    const DriftArrays &d = s.drift;
+    float *along = d.along, *smooth = d.smooth;
     // (A free vertex's normal is its lane's in `fit`, slot by slot; empty slots' are 0.)
     const FitBlock *const fit = s.fit;
-    StageThreads &threads = s.threads;
     // (The sweeps are done: their byte offsets in slotNeighbours become slots, one instruction less
     // a neighbour in the rounds.)
     threads.forRanges(s.freeSlots, 4 * kBlockGrain, [&](size_t first, size_t last) {
@@ -200,79 +290,15 @@ VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds, int wid
         for (size_t i = kRegularValence * first; i < kRegularValence * last; ++i)
             neighbours[i] /= uint32_t(sizeof(Offset));
     });
-    // (Vertex ranges split between the threads, each listing its others; joined in range order.)
-    const size_t vertexGrain = 4 * kBlockGrain, vertexChunks = (V + vertexGrain - 1) / vertexGrain;
-    std::vector<std::vector<uint32_t>> othersIn(vertexChunks);
-    threads.run(vertexChunks, [&](size_t chunk) {
-        for (size_t v = chunk * vertexGrain; v < std::min(V, (chunk + 1) * vertexGrain); ++v) {
-            const uint32_t slot = rank[v];
-            weight[slot] = 1.0f / float(1 + start[v + 1] - start[v]);
-            if (!isFree(kind[v]) || !regular[slot / 4])
-                othersIn[chunk].push_back(uint32_t(v));
-        }
-    });
-    for (const std::vector<uint32_t> &o : othersIn) {
-        std::copy(o.begin(), o.end(), others + otherCount);
-        otherCount += o.size();
-    }
-    // `count` rounds on `values` (by slot; `spare` as large), the result in `values`.
-    // The same sums in the same order as over each vertex's corner list: a regular block's lists
-    // (sweep_layout.cpp) are that list padded with the zero slot, whose 0 adds nothing.
-    // Each round's slots are independent (Jacobi): the blocks and the other vertices split
-    // between the threads, the same sums either way.
-    auto average = [&](float *&values, float *&spare, int count) {
-        // (One run a round: the blocks' chunks, then the other vertices'.)
-        const size_t blockChunks = (blocks + kBlockGrain - 1) / kBlockGrain;
-        const size_t chunks = blockChunks + (otherCount + kBlockGrain - 1) / kBlockGrain;
-        for (int round = 0; round < count; ++round) {
-            threads.run(chunks, [&, values, spare](size_t chunk) {
-                if (chunk >= blockChunks) {
-                    const size_t first = (chunk - blockChunks) * kBlockGrain;
-                    for (size_t i = first; i < std::min(otherCount, first + kBlockGrain); ++i)
-                        spare[rank[others[i]]] = cornerListMean(s, values, weight, others[i]);
-                    return;
-                }
-                averageRegularBlocks(values, spare, weight, neighbours, regular, valence, chunk * kBlockGrain,
-                                     std::min(blocks, (chunk + 1) * kBlockGrain));
-            });
-            std::swap(values, spare);
-        }
-    };
-    average(along, smooth, rounds);
+    auto onThreads = [&threads](size_t chunks, auto &&chunk) { threads.run(chunks, chunk); };
+    averageRounds<0>(s, along, smooth, rounds, onThreads);
     if (wideRounds > rounds) {
-        float *const local = s.scratch.template take<float>(slots);
+        float *const local = d.local;
         threads.forRanges(slots, 4 * kBlockGrain, [along, local](size_t first, size_t last) {
             std::copy(along + first, along + last, local + first);
         });
-        average(along, smooth, wideRounds - rounds);
-        // Where the shape turns (see above), by slot; the zero slot stays 0.
-        float *near = s.scratch.template take<float>(slots);
-        threads.forRanges(slots, 4 * kBlockGrain,
-                          [near](size_t first, size_t last) { std::fill(near + first, near + last, 0.0f); });
-        const VertexNormal *const vertexNormal = s.vertexNormal;
-        const float turnCos = std::cos(glm::radians(kTurnDegrees));
-        const float latticeCos = std::cos(glm::radians(kLatticeDegrees));
-        // (Vertex ranges split between the threads, each listing its marked vertices; listed
-        // in the ranges' order.)
-        const size_t grain = 4 * kBlockGrain, chunks = (V + grain - 1) / grain;
-        std::vector<std::vector<uint32_t>> markedIn(chunks);
-        threads.run(chunks, [&markedIn, vertexNormal, kind, start, next, rank, near, latticeCos, turnCos, grain,
-                             V](size_t chunk) {
-            for (size_t v = chunk * grain; v < std::min(V, (chunk + 1) * grain); ++v) {
-                const glm::vec3 n = vertexNormal[v].n, a = glm::abs(n);
-                bool turns = !isFree(kind[v]) || std::max(a.x, std::max(a.y, a.z)) > latticeCos;
-                for (uint32_t j = start[v]; !turns && j < start[v + 1]; ++j)
-                    turns = glm::dot(n, vertexNormal[next[j]].n) < turnCos;
-                near[rank[v]] = turns ? 1.0f : 0.0f;
-                if (turns)
-                    markedIn[chunk].push_back(uint32_t(v));
-            }
-        });
-        std::vector<uint32_t> marked;
-        for (const std::vector<uint32_t> &m : markedIn)
-            marked.insert(marked.end(), m.begin(), m.end());
-        averageNearMarks(s, weight, marked, rounds, near, smooth,
-                         [&](float *&values, float *&spare, int count) { average(values, spare, count); });
+        averageRounds<0>(s, along, smooth, wideRounds - rounds, onThreads);
+        const float *const near = d.near;
         threads.forRanges(s.freeSlots, 4 * kBlockGrain, [&](size_t first, size_t last) {
             for (size_t slot = first; slot < last; ++slot) {
                 const float t = std::min(1.0f, kNearGain * near[slot]);
@@ -295,6 +321,10 @@ VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds, int wid
     });
 }
 
+template void takeDriftArrays(FairingState<true> &, int, int);
+template void takeDriftArrays(FairingState<false> &, int, int);
+template void prepareDrift(FairingState<true> &, int, int);
+template void prepareDrift(FairingState<false> &, int, int);
 template void removeDrift(FairingState<true> &, int, int);
 template void removeDrift(FairingState<false> &, int, int);
 

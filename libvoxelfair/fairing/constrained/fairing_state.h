@@ -77,6 +77,17 @@ struct alignas(16) VertexNormal {
     float unused;
 };
 
+// Step 5's arrays by slot (drift_removal.cpp), taken by takeDriftArrays and filled by
+// prepareDrift (beside the last pass's sweeps) and removeDrift.
+struct DriftArrays {
+    float *along = nullptr, *smooth = nullptr;  // n . d and the rounds' other buffer
+    float *weight = nullptr;                    // 1 / (1 + neighbours), 0 for empty slots
+    float *local = nullptr;                     // the local mean (with wide rounds)
+    float *near = nullptr, *nearSpare = nullptr;  // the averaged marks where the shape turns, a spare
+    uint32_t *others = nullptr;                 // vertices averaged over their corner lists
+    size_t otherCount = 0;
+};
+
 template <bool kQuads>
 struct FairingState {
     FairingState(glm::vec3 *positions_, size_t vertexCount, const uint32_t *polygonOffsets,
@@ -107,14 +118,14 @@ struct FairingState {
         return Arena::bytes<glm::vec3>(P + 2) + Arena::bytes<VertexNormal>(V) + Arena::bytes<uint8_t>(V) +
                Arena::bytes<uint32_t>(freeSlots) + Arena::bytes<uint32_t>(kRegularValence * freeSlots) +
                Arena::bytes<Offset>(freeSlots + V + 1) + Arena::bytes<FitBlock>(freeSlots / 4) +
-               2 * Arena::bytes<uint8_t>(freeSlots / 4) + std::max(featureFitBytes(), driftBytes(freeSlots + V + 1));
+               2 * Arena::bytes<uint8_t>(freeSlots / 4) + featureFitBytes() + driftBytes(freeSlots + V + 1);
     }
     // fitFeatureVertices' lists, taken after step 3's arrays and given back each pass.
     size_t featureFitBytes() const {
         return 3 * Arena::bytes<uint32_t>(V) + Arena::bytes<uint32_t>(V + 1) + Arena::bytes<uint32_t>(cornerCount);
     }
-    // removeDrift's arrays, taken after step 3's arrays once the passes are done.
-    size_t driftBytes(size_t slots) const { return 5 * Arena::bytes<float>(slots) + Arena::bytes<uint32_t>(V); }
+    // step 5's arrays (DriftArrays), taken after step 3's arrays before the last pass's sweeps.
+    size_t driftBytes(size_t slots) const { return 6 * Arena::bytes<float>(slots) + Arena::bytes<uint32_t>(V); }
     // The arrays of the setup stages, taken before the first one runs.
     void takeArrays() {
         kind = arrays.take<VertexKind>(V);
@@ -193,6 +204,7 @@ struct FairingState {
     uint8_t *blockValence = nullptr;  // per block: its Free vertices' most neighbours (at most kRegularValence)
     uint8_t *turning = nullptr;       // by vertex: a neighbour's normal beyond featureSpread (fitFreeVertices)
     bool anyTurning = false;
+    DriftArrays drift;  // step 5's
 
     // plane_regions.cpp: free vertices held at a fixed offset, lending a normal to their neighbours.
     std::vector<uint32_t> anchored;
@@ -226,6 +238,10 @@ template <bool kQuads>
 void lendAnchorNormals(FairingState<kQuads> &s);
 template <bool kQuads>
 void holdAnchors(FairingState<kQuads> &s);
+template <bool kQuads>
+void takeDriftArrays(FairingState<kQuads> &s, int rounds, int wideRounds);
+template <bool kQuads>
+void prepareDrift(FairingState<kQuads> &s, int rounds, int wideRounds);
 template <bool kQuads>
 void removeDrift(FairingState<kQuads> &s, int rounds, int wideRounds);
 template <bool kQuads>

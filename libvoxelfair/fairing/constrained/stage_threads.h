@@ -73,6 +73,28 @@ public:
         run((n + grain - 1) / grain, [&](size_t c) { range(c * grain, std::min(n, (c + 1) * grain)); });
     }
 
+    // Work beside a serial stage: startAside(task) has a helper call task(0) while the caller goes
+    // on (with one thread, task(0) runs here and now); joinAside() returns when it has returned
+    // (running it here if no helper has taken it yet). `task` must live until then and must not
+    // call run(); the caller calls no run() in between, and neither touches what the other writes.
+    template <class Task>
+    void startAside(Task &task) {
+        if (count_ == 1) {
+            task(size_t(0));
+            return;
+        }
+        asideGeneration_ = publish(1, task);
+        aside_ = true;
+    }
+    void joinAside() {
+        if (!aside_)
+            return;
+        aside_ = false;
+        work(asideGeneration_, true);
+        for (unsigned spins = 0; done_.load(std::memory_order_acquire) != 1; ++spins)
+            pause(spins);
+    }
+
 private:
     static void pause(unsigned spins) {
         if (spins < kSpins) {
@@ -105,6 +127,13 @@ private:
     }
     template <class Chunk>
     void runPart(size_t chunks, Chunk &chunk) {
+        work(publish(chunks, chunk), true);
+        for (unsigned spins = 0; done_.load(std::memory_order_acquire) != chunks; ++spins)
+            pause(spins);
+    }
+    // Makes `chunks` chunks of `chunk` claimable and wakes the helpers; returns the run's generation.
+    template <class Chunk>
+    uint64_t publish(size_t chunks, Chunk &chunk) {
         // Published before the claim word: a thread whose claim of this run succeeds sees them.
         using Job = std::remove_reference_t<Chunk>;
         job_.store(const_cast<void *>(static_cast<const void *>(&chunk)), std::memory_order_relaxed);
@@ -117,9 +146,7 @@ private:
             claim_.store(generation << kGenerationShift | uint64_t(chunks), std::memory_order_release);
         }
         wake_.notify_all();
-        work(generation, true);
-        for (unsigned spins = 0; done_.load(std::memory_order_acquire) != chunks; ++spins)
-            pause(spins);
+        return generation;
     }
     void serve() {
         uint64_t seen = 0;
@@ -156,6 +183,8 @@ private:
     std::atomic<void *> job_{nullptr};
     std::atomic<void (*)(void *, size_t)> call_{nullptr};
     std::atomic<bool> stop_{false};
+    uint64_t asideGeneration_ = 0;  // the caller's alone
+    bool aside_ = false;
 };
 
 }  // namespace voxelfair::constrained
