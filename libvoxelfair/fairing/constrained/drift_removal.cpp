@@ -285,8 +285,8 @@ VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds, int wid
     // (The sweeps are done: their byte offsets in slotNeighbours become slots, one instruction less
     // a neighbour in the rounds.)
     threads.forRanges(s.freeSlots, 4 * kBlockGrain, [&](size_t first, size_t last) {
-        for (size_t slot = first; slot < last; ++slot)
-            along[slot] = glm::dot(fit[slot / 4].n(int(slot % 4)), offset[slot].d);
+        for (size_t block = first / 4; block < last / 4; ++block)
+            alongNormalOfBlock(fit[block], offset + 4 * block, along + 4 * block);
         for (size_t i = kRegularValence * first; i < kRegularValence * last; ++i)
             neighbours[i] /= uint32_t(sizeof(Offset));
     });
@@ -311,6 +311,36 @@ VOXELFAIR_NOINLINE void removeDrift(FairingState<kQuads> &s, int rounds, int wid
         held[v] = 1;
     const float half = s.half;
     threads.forRanges(s.freeSlots, 4 * kBlockGrain, [&](size_t first, size_t last) {
+#ifdef VOXELFAIR_SSE2
+        if (held.empty()) {
+            // Four slots at once: the same products, differences and clamps as below.
+            const __m128 lo = _mm_set1_ps(-half), hi = _mm_set1_ps(half);
+            for (size_t block = first / 4; block < last / 4; ++block) {
+                Offset *const own = offset + 4 * block;
+                const FitBlock &f = fit[block];
+                __m128 a = _mm_load_ps(&own[0].alongNormal), dx = _mm_load_ps(&own[1].alongNormal),
+                       dy = _mm_load_ps(&own[2].alongNormal), dz = _mm_load_ps(&own[3].alongNormal);
+                _MM_TRANSPOSE4_PS(a, dx, dy, dz);
+                // (Empty slots keep their offset: lanes whose vertex is kNone.)
+                const __m128 keep = _mm_castsi128_ps(_mm_cmpeq_epi32(
+                    _mm_loadu_si128(reinterpret_cast<const __m128i *>(vertexAt + 4 * block)), _mm_set1_epi32(-1)));
+                const __m128 t = _mm_load_ps(along + 4 * block);
+                auto moved = [&](__m128 d, const float *n) {
+                    const __m128 x = _mm_min_ps(_mm_max_ps(_mm_sub_ps(d, _mm_mul_ps(t, _mm_load_ps(n))), lo), hi);
+                    return _mm_or_ps(_mm_and_ps(keep, d), _mm_andnot_ps(keep, x));
+                };
+                dx = moved(dx, f.nx);
+                dy = moved(dy, f.ny);
+                dz = moved(dz, f.nz);
+                _MM_TRANSPOSE4_PS(a, dx, dy, dz);
+                _mm_store_ps(&own[0].alongNormal, a);
+                _mm_store_ps(&own[1].alongNormal, dx);
+                _mm_store_ps(&own[2].alongNormal, dy);
+                _mm_store_ps(&own[3].alongNormal, dz);
+            }
+            return;
+        }
+#endif
         for (size_t slot = first; slot < last; ++slot) {
             const uint32_t v = vertexAt[slot];
             if (v != kNone && (held.empty() || !held[v])) {

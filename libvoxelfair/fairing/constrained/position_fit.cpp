@@ -143,9 +143,13 @@ VOXELFAIR_NOINLINE void fitFreeVertices(FairingState<kQuads> &s) {
     s.anyTurning = anyTurning.load();
     // n . d with this pass's normals, slot by slot.
     Offset *const offset = s.offset;
-    s.threads.forRanges(s.freeSlots, kVertexGrain, [&](size_t first, size_t last) {
-        for (size_t slot = first; slot < last; ++slot)
-            offset[slot].alongNormal = glm::dot(fit[slot / 4].n(int(slot % 4)), offset[slot].d);
+    s.threads.forRanges(s.freeSlots, kVertexGrain, [offset, fit](size_t first, size_t last) {
+        alignas(16) float along[4];
+        for (size_t block = first / 4; block < last / 4; ++block) {
+            alongNormalOfBlock(fit[block], offset + 4 * block, along);
+            for (int lane = 0; lane < 4; ++lane)
+                offset[4 * block + lane].alongNormal = along[lane];
+        }
     });
 }
 

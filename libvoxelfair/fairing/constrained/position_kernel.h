@@ -47,6 +47,20 @@ struct alignas(16) FitBlock {
     glm::vec3 sumS(int lane) const { return {sx[lane], sy[lane], sz[lane]}; }
 };
 
+// n . d of the four slots `own` of a block into along[0..3] (glm::dot's sums, in SSE four at once).
+inline void alongNormalOfBlock(const FitBlock &f, const Offset *own, float *along) {
+#ifdef VOXELFAIR_SSE2
+    __m128 a = _mm_load_ps(&own[0].alongNormal), dx = _mm_load_ps(&own[1].alongNormal),
+           dy = _mm_load_ps(&own[2].alongNormal), dz = _mm_load_ps(&own[3].alongNormal);
+    _MM_TRANSPOSE4_PS(a, dx, dy, dz);
+    _mm_storeu_ps(along, _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_load_ps(f.nx), dx), _mm_mul_ps(_mm_load_ps(f.ny), dy)),
+                                    _mm_mul_ps(_mm_load_ps(f.nz), dz)));
+#else
+    for (int lane = 0; lane < 4; ++lane)
+        along[lane] = glm::dot(f.n(lane), own[lane].d);
+#endif
+}
+
 // One Gauss-Seidel step of a free vertex, given `along`.
 inline void moveFreeVertex(const FitBlock &f, int lane, float along, float half, Offset &o) {
     const glm::vec3 n = f.n(lane);
