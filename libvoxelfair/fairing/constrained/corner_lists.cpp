@@ -103,14 +103,11 @@ VOXELFAIR_NOINLINE void buildCorners(FairingState<kQuads> &s) {
             if (edge)
                 boundary.push_back(c);
         };
+        // (Each edge's lower corner listed here, the creases among them picked after the loop.)
         auto foundTwin = [&](uint32_t c, uint32_t t) {
             twin[c] = t;
             creases[creaseCount] = c;
-#ifdef VOXELFAIR_SSE2
-            creaseCount += t > c && dot3(load3(normal[k.polygonOf(c)]), load3(normal[k.polygonOf(t)])) < creaseCos;
-#else
-            creaseCount += t > c && glm::dot(normal[k.polygonOf(c)], normal[k.polygonOf(t)]) < creaseCos;
-#endif
+            creaseCount += t > c;
         };
         for (size_t a = tileStart; a < tileEnd; ++a) {
             const uint32_t first = start[a], count = start[a + 1] - first;
@@ -176,7 +173,17 @@ VOXELFAIR_NOINLINE void buildCorners(FairingState<kQuads> &s) {
                     noTwin(c, true);
             }
         }
-        tileCreases.resize(creaseCount);
+        size_t kept = 0;
+        for (size_t i = 0; i < creaseCount; ++i) {
+            const uint32_t c = creases[i], t = twin[c];
+            creases[kept] = c;
+#ifdef VOXELFAIR_SSE2
+            kept += dot3(load3(normal[k.polygonOf(c)]), load3(normal[k.polygonOf(t)])) < creaseCos;
+#else
+            kept += glm::dot(normal[k.polygonOf(c)], normal[k.polygonOf(t)]) < creaseCos;
+#endif
+        }
+        tileCreases.resize(kept);
     });
     size_t creaseCount = 0;
     for (size_t tile = 0; tile < tiles; ++tile) {
