@@ -111,16 +111,18 @@ VOXELFAIR_NOINLINE void buildCorners(FairingState<kQuads> &s) {
         };
         for (size_t a = tileStart; a < tileEnd; ++a) {
             const uint32_t first = start[a], count = start[a + 1] - first;
+            // The wave, from the next vertices in the twins' loop below (one loop over the corners:
+            // its end, at a count that varies, is a mispredicted branch). (Next vertices are enough:
+            // a free vertex has no sharp edge, so every edge a -> u has its twin u -> a, and only
+            // free vertices are ordered.)
             uint32_t w = 0;
-            // (Next vertices are enough: a free vertex has no sharp edge, so every edge a -> u has its
-            // twin u -> a, and only free vertices are ordered.)
-            for (uint32_t i = first; i < first + count; ++i) {
-                // Masked, not branched on: half the neighbours come before, in no pattern (the
-                // others read a's own wave, 0 so far, not another tile's, which another thread writes).
-                const uint32_t u = next[i], before = uint32_t(u < a && u >= tileStart);
-                w = std::max(w, (wave[before != 0 ? u : a] + 1) & (0u - before));
-            }
-            wave[a] = w;
+            auto inWave = [&w, wave, a, tileStart](uint32_t u) {
+                // Not branched on: half the neighbours come before, in no pattern. The others read
+                // a's own wave, 0 so far (not another tile's, which another thread writes), plus 0.
+                // (A mask on the sum, as before, let the compiler branch around the load.)
+                const uint32_t before = uint32_t(u < a) & uint32_t(u >= tileStart);
+                w = std::max(w, wave[before != 0 ? u : uint32_t(a)] + before);
+            };
 #ifdef VOXELFAIR_SSE2
             if (count <= 8) {
                 // 8 lanes compared at once: where the match is varies, a branch on it would mispredict
@@ -136,6 +138,7 @@ VOXELFAIR_NOINLINE void buildCorners(FairingState<kQuads> &s) {
                 };
                 for (uint32_t i = 0; i < count; ++i) {
                     const uint32_t b = next[first + i];
+                    inWave(b);
                     const __m128i bb = _mm_set1_epi32(int(b));
                     const unsigned out = matches(bb, next0, next1), in = matches(bb, previous0, previous1);
                     // Exactly one each way (out holds i at least).
@@ -151,11 +154,13 @@ VOXELFAIR_NOINLINE void buildCorners(FairingState<kQuads> &s) {
                     else
                         noTwin(c, true);
                 }
+                wave[a] = w;
                 continue;
             }
 #endif
             for (uint32_t i = first; i < first + count; ++i) {
                 const uint32_t b = next[i];
+                inWave(b);
                 if (b == a)
                     continue;  // no edge
                 uint32_t out = 0, in = 0, back = 0;
@@ -172,6 +177,7 @@ VOXELFAIR_NOINLINE void buildCorners(FairingState<kQuads> &s) {
                 else
                     noTwin(c, true);
             }
+            wave[a] = w;
         }
         size_t kept = 0;
         for (size_t i = 0; i < creaseCount; ++i) {

@@ -65,59 +65,33 @@ inline float cornerListMean(const FairingState<kQuads> &s, const float *values, 
     return sum * weight[s.rank[v]];
 }
 
-#ifdef VOXELFAIR_SSE2
-// A block's four sums `own` + u0 + ... + u(kUsed - 1), side by side, from its padded lists `n`.
-template <int kUsed, int kShift>
-inline __m128 blockSum(const float *values, const uint32_t *n, __m128 sum) {
-    for (uint32_t i = 0; i < uint32_t(kUsed); ++i)
-        sum = _mm_add_ps(sum, _mm_setr_ps(values[n[i] >> kShift], values[n[kRegularValence + i] >> kShift],
-                                          values[n[2 * kRegularValence + i] >> kShift],
-                                          values[n[3 * kRegularValence + i] >> kShift]));
-    return sum;
-}
-#endif
-
 // One Jacobi round on the regular blocks [firstBlock, lastBlock): each slot's value and its
 // neighbours' (the padded lists of sweep_layout.cpp: slots times 2^kShift), summed in the
 // corner list's order, times its weight, into `spare`.
 template <int kShift>
 inline void averageRegularBlocks(const float *values, float *spare, const float *weight, const uint32_t *neighbours,
-                                 const uint8_t *regular, const uint8_t *valence, size_t firstBlock,
-                                 size_t lastBlock) {
+                                 const uint8_t *regular, size_t firstBlock, size_t lastBlock) {
     for (size_t block = firstBlock; block < lastBlock; ++block) {
         if (!regular[block])
             continue;
-        // (The lists past the block's most neighbours hold the zero slot alone: left out.)
-        const uint32_t used = valence[block];
 #ifdef VOXELFAIR_SSE2
-        // The four slots' sums side by side, each in the order below (unrolled for each count).
-        const uint32_t *const n = neighbours + kRegularValence * 4 * block;
-        const __m128 own = _mm_load_ps(values + 4 * block);
-        __m128 sum;
-        switch (used) {
-        case 0:
-        case 1:
-        case 2:
-        case 3:
-            sum = blockSum<3, kShift>(values, n, own);
-            break;
-        case 4:
-            sum = blockSum<4, kShift>(values, n, own);
-            break;
-        case 5:
-            sum = blockSum<5, kShift>(values, n, own);
-            break;
-        default:
-            sum = blockSum<6, kShift>(values, n, own);
-            break;
-        }
+        // The four slots' sums side by side, each in the order below.
+        const uint32_t *n = neighbours + kRegularValence * 4 * block;
+        auto gather = [&](uint32_t i) {
+            return _mm_setr_ps(values[n[i] >> kShift], values[n[kRegularValence + i] >> kShift],
+                               values[n[2 * kRegularValence + i] >> kShift],
+                               values[n[3 * kRegularValence + i] >> kShift]);
+        };
+        __m128 sum = _mm_load_ps(values + 4 * block);
+        for (uint32_t i = 0; i < kRegularValence; ++i)
+            sum = _mm_add_ps(sum, gather(i));
         _mm_store_ps(spare + 4 * block, _mm_mul_ps(sum, _mm_load_ps(weight + 4 * block)));
         continue;
 #endif
         for (size_t slot = 4 * block; slot < 4 * block + 4; ++slot) {
             const uint32_t *n = neighbours + kRegularValence * slot;
             float sum = values[slot];
-            for (uint32_t i = 0; i < used; ++i)
+            for (uint32_t i = 0; i < kRegularValence; ++i)
                 sum += values[n[i] >> kShift];
             spare[slot] = sum * weight[slot];
         }
@@ -182,7 +156,7 @@ void averageRounds(const FairingState<kQuads> &s, float *&values, float *&spare,
     const DriftArrays &d = s.drift;
     const size_t blocks = s.freeSlots / 4, otherCount = d.otherCount;
     const uint32_t *const neighbours = s.slotNeighbours, *const others = d.others, *const rank = s.rank;
-    const uint8_t *const regular = s.regularBlock, *const valence = s.blockValence;
+    const uint8_t *const regular = s.regularBlock;
     const float *const weight = d.weight;
     static_assert(sizeof(Offset) == size_t(1) << 4, "byte offsets to slots");
     // (One run a round: the blocks' chunks, then the other vertices'.)
@@ -196,7 +170,7 @@ void averageRounds(const FairingState<kQuads> &s, float *&values, float *&spare,
                     spare[rank[others[i]]] = cornerListMean(s, values, weight, others[i]);
                 return;
             }
-            averageRegularBlocks<kShift>(values, spare, weight, neighbours, regular, valence, chunk * kBlockGrain,
+            averageRegularBlocks<kShift>(values, spare, weight, neighbours, regular, chunk * kBlockGrain,
                                          std::min(blocks, (chunk + 1) * kBlockGrain));
         });
         std::swap(values, spare);

@@ -118,7 +118,7 @@ struct FairingState {
         return Arena::bytes<glm::vec3>(P + 2) + Arena::bytes<VertexNormal>(V) + Arena::bytes<uint8_t>(V) +
                Arena::bytes<uint32_t>(freeSlots) + Arena::bytes<uint32_t>(kRegularValence * freeSlots) +
                Arena::bytes<Offset>(freeSlots + V + 1) + Arena::bytes<FitBlock>(freeSlots / 4) +
-               2 * Arena::bytes<uint8_t>(freeSlots / 4) + featureFitBytes() + driftBytes(freeSlots + V + 1);
+               Arena::bytes<uint8_t>(freeSlots / 4) + featureFitBytes() + driftBytes(freeSlots + V + 1);
     }
     // fitFeatureVertices' lists, taken after step 3's arrays and given back each pass.
     size_t featureFitBytes() const {
@@ -201,7 +201,6 @@ struct FairingState {
     Offset *offset = nullptr;
     FitBlock *fit = nullptr;          // per block of four free slots
     uint8_t *regularBlock = nullptr;  // per block: all its vertices Free (moveFreeBlock)
-    uint8_t *blockValence = nullptr;  // per block: its Free vertices' most neighbours (at most kRegularValence)
     uint8_t *turning = nullptr;       // by vertex: a neighbour's normal beyond featureSpread (fitFreeVertices)
     bool anyTurning = false;
     DriftArrays drift;  // step 5's

@@ -202,35 +202,16 @@ VOXELFAIR_NOINLINE void sweep(FairingState<kQuads> &s, bool forward) {
     // Free vertices, alternating direction so that no side of the mesh leads.
     const FitBlock *const fit = s.fit;
     const uint32_t *const neighbours = s.slotNeighbours;
-    const uint8_t *const regular = s.regularBlock, *const valence = s.blockValence;
+    const uint8_t *const regular = s.regularBlock;
     Offset *const offset = s.offset;
     const size_t blocks = s.freeSlots / 4;
     const float half = s.half;
     for (size_t i = 0; i < blocks; ++i) {
         const size_t block = forward ? i : blocks - 1 - i;
-        if (!regular[block]) {
+        if (regular[block])
+            moveFreeBlock(fit[block], neighbours + 4 * kRegularValence * block, offset, offset + 4 * block, half);
+        else
             moveIrregularBlock(s, block);
-            continue;
-        }
-        // (Only the neighbours the block's vertices have: most blocks' have as many, see buildSlots.)
-        const uint32_t *const own = neighbours + 4 * kRegularValence * block;
-        switch (valence[block]) {
-        case 0:
-        case 1:
-        case 2:
-        case 3:
-            moveFreeBlock<3>(fit[block], own, offset, offset + 4 * block, half);
-            break;
-        case 4:
-            moveFreeBlock<4>(fit[block], own, offset, offset + 4 * block, half);
-            break;
-        case 5:
-            moveFreeBlock<5>(fit[block], own, offset, offset + 4 * block, half);
-            break;
-        default:
-            moveFreeBlock<6>(fit[block], own, offset, offset + 4 * block, half);
-            break;
-        }
     }
 }
 

@@ -69,31 +69,17 @@ inline void moveFreeVertex(const FitBlock &f, int lane, float along, float half,
 }
 
 // The update of the contract for the four vertices `own` of a block; `neighbours` holds
-// 4 * kRegularValence byte offsets into `offsets` (saving an instruction per neighbour), of which
-// each vertex's past the first kUsed are the zero slot's (kUsed from 3 to kRegularValence).
-// Each vertex's sum in the order ((u0 + u1) + (u2 + u3)) + (u4 + u5): the zero slot's 0 that
-// kUsed < 6 leaves out adds nothing (x + 0 = x but for the sign of a zero sum, which the
-// positions input + d do not see), so every kUsed gives the same positions.
+// 4 * kRegularValence byte offsets into `offsets` (saving an instruction per neighbour).
 #ifdef VOXELFAIR_SSE2
-template <int kUsed>
 inline void moveFreeBlock(const FitBlock &f, const uint32_t *neighbours, Offset *offsets, Offset *own, float half) {
-    static_assert(kRegularValence == 6 && kUsed >= 3 && kUsed <= 6, "unrolled below");
+    static_assert(kRegularValence == 6, "unrolled below");
     const char *const bytes = reinterpret_cast<const char *>(offsets);
     auto load = [&](uint32_t offset) { return _mm_load_ps(reinterpret_cast<const float *>(bytes + offset)); };
     __m128 sum[4];  // (sum n_u . d_u, sum d_u) per vertex
-    for (int j = 0; j < 4; ++j, neighbours += kRegularValence) {
-        const __m128 first = _mm_add_ps(load(neighbours[0]), load(neighbours[1]));
-        if constexpr (kUsed == 3)
-            sum[j] = _mm_add_ps(first, load(neighbours[2]));
-        else if constexpr (kUsed == 4)
-            sum[j] = _mm_add_ps(first, _mm_add_ps(load(neighbours[2]), load(neighbours[3])));
-        else if constexpr (kUsed == 5)
-            sum[j] = _mm_add_ps(_mm_add_ps(first, _mm_add_ps(load(neighbours[2]), load(neighbours[3]))),
-                                load(neighbours[4]));
-        else
-            sum[j] = _mm_add_ps(_mm_add_ps(first, _mm_add_ps(load(neighbours[2]), load(neighbours[3]))),
-                                _mm_add_ps(load(neighbours[4]), load(neighbours[5])));
-    }
+    for (int j = 0; j < 4; ++j, neighbours += kRegularValence)
+        sum[j] = _mm_add_ps(_mm_add_ps(_mm_add_ps(load(neighbours[0]), load(neighbours[1])),
+                                       _mm_add_ps(load(neighbours[2]), load(neighbours[3]))),
+                            _mm_add_ps(load(neighbours[4]), load(neighbours[5])));
     _MM_TRANSPOSE4_PS(sum[0], sum[1], sum[2], sum[3]);
     __m128 a = _mm_load_ps(&own[0].alongNormal), dx = _mm_load_ps(&own[1].alongNormal),
            dy = _mm_load_ps(&own[2].alongNormal), dz = _mm_load_ps(&own[3].alongNormal);
@@ -116,13 +102,12 @@ inline void moveFreeBlock(const FitBlock &f, const uint32_t *neighbours, Offset 
     _mm_store_ps(&own[3].alongNormal, dz);
 }
 #else
-template <int kUsed>
 inline void moveFreeBlock(const FitBlock &f, const uint32_t *neighbours, Offset *offsets, Offset *own, float half) {
     float along[4];
     for (int j = 0; j < 4; ++j, neighbours += kRegularValence) {
         glm::vec3 sumD(0.0f);
         float sumAlong = 0.0f;
-        for (uint32_t i = 0; i < uint32_t(kUsed); ++i) {
+        for (uint32_t i = 0; i < kRegularValence; ++i) {
             const Offset &o = offsets[neighbours[i] / sizeof(Offset)];
             sumD += o.d;
             sumAlong += o.alongNormal;

@@ -34,7 +34,6 @@ VOXELFAIR_NOINLINE void buildSlots(FairingState<kQuads> &s) {
     // (from the tile's first) and its count of other vertices, then, from the tiles' first slots
     // and first other slots, each vertex's slot.
     const size_t tiles = (V + kTileSize - 1) / kTileSize;
-    const uint32_t *const start = s.vertexStart, *const next = s.vertexNext;
     std::vector<std::vector<uint32_t>> waveStartIn(tiles);
     std::vector<size_t> tileSlot(tiles + 1, 0), tileOther(tiles + 1, 0);
     s.threads.run(tiles, [&](size_t tile) {
@@ -48,17 +47,13 @@ VOXELFAIR_NOINLINE void buildSlots(FairingState<kQuads> &s) {
                 ++others;
         }
         std::vector<uint32_t> &waveStart = waveStartIn[tile];
-        waveStart.assign(waves, 0);
+        waveStart.assign(waves + 1, 0);
         for (size_t v = tileStart; v < tileEnd; ++v)
             if (isFree(kind[v]))
-                ++waveStart[wave[v]];
-        uint32_t slot = 0;
-        for (uint32_t w = 0; w < waves; ++w) {
-            const uint32_t count = waveStart[w];
-            waveStart[w] = slot;
-            slot += (count + 3) & ~3u;  // whole blocks
-        }
-        tileSlot[tile + 1] = slot;
+                ++waveStart[wave[v] + 1];
+        for (uint32_t w = 0; w < waves; ++w)
+            waveStart[w + 1] = waveStart[w] + ((waveStart[w + 1] + 3) & ~3u);  // whole blocks
+        tileSlot[tile + 1] = waveStart[waves];
         tileOther[tile + 1] = others;
     });
     for (size_t tile = 0; tile < tiles; ++tile) {
@@ -100,40 +95,37 @@ VOXELFAIR_NOINLINE void buildSlots(FairingState<kQuads> &s) {
     });
     s.fit = s.scratch.template take<FitBlock>(freeSlots / 4);
     s.regularBlock = s.scratch.template take<uint8_t>(freeSlots / 4);
-    s.blockValence = s.scratch.template take<uint8_t>(freeSlots / 4);
     // (moveFreeBlock reads slotNeighbours as byte offsets, which must fit 32 bits: beyond 2^28
     // slots every vertex goes through the general path.)
     const bool regularFits = zeroSlot < (1u << 28);
     std::fill(s.regularBlock, s.regularBlock + freeSlots / 4, uint8_t(regularFits));  // see fitFreeVertices
-    // Free vertices' neighbours by slot, and each block's most neighbours (block ranges split
-    // between the threads: each writes its own slots).
+    // Free vertices' neighbours by slot (vertex by vertex: the neighbours' ranks are near in memory).
     uint32_t *const slotNeighbours = s.slotNeighbours;
-    uint8_t *const blockValence = s.blockValence;
-    FitBlock *const fit = s.fit;
-    s.threads.forRanges(freeSlots / 4, 1024, [&, slotNeighbours, blockValence, fit, vertexAt, kind, start, next, rank,
-                                              zeroSlot](size_t firstBlock, size_t lastBlock) {
-        for (size_t block = firstBlock; block < lastBlock; ++block) {
-            uint32_t most = 0;
-            for (size_t slot = 4 * block; slot < 4 * block + 4; ++slot) {
-                uint32_t *const out = slotNeighbours + kRegularValence * slot;
-                const uint32_t v = vertexAt[slot];
-                if (v == kNone) {
-                    std::fill(out, out + kRegularValence, uint32_t(sizeof(Offset)) * zeroSlot);
-                    FitBlock &f = fit[block];
-                    const int lane = int(slot % 4);
-                    f.stepScale[lane] = f.nx[lane] = f.ny[lane] = f.nz[lane] = 0.0f;
-                    f.base[lane] = f.sx[lane] = f.sy[lane] = f.sz[lane] = 0.0f;
-                    continue;
-                }
-                const uint32_t count = kind[v] == VertexKind::Free ? start[v + 1] - start[v] : 0;
-                most = std::max(most, count);
-                for (uint32_t i = 0; i < kRegularValence; ++i) {
-                    // (Selected, not branched on: the count varies in no pattern.)
-                    const uint32_t neighbour = rank[next[start[v] + std::min(i, std::max(count, 1u) - 1)]];
-                    out[i] = uint32_t(sizeof(Offset)) * (i < count ? neighbour : zeroSlot);
-                }
+    const uint32_t *const start = s.vertexStart, *const next = s.vertexNext;
+    // (Vertex ranges, then slot ranges, split between the threads: each writes its own slots.)
+    s.threads.forRanges(V, 4096, [&](size_t first, size_t last) {
+        for (size_t v = first; v < last; ++v) {
+            if (!isFree(kind[v]))
+                continue;
+            uint32_t *out = slotNeighbours + kRegularValence * size_t(rank[v]);
+            const uint32_t count = kind[v] == VertexKind::Free ? start[v + 1] - start[v] : 0;
+            for (uint32_t i = 0; i < kRegularValence; ++i) {
+                // (Selected, not branched on: the count varies in no pattern.)
+                const uint32_t neighbour = rank[next[start[v] + std::min(i, std::max(count, 1u) - 1)]];
+                out[i] = uint32_t(sizeof(Offset)) * (i < count ? neighbour : zeroSlot);
             }
-            blockValence[block] = uint8_t(std::min(most, kRegularValence));
+        }
+    });
+    s.threads.forRanges(freeSlots / 4, 1024, [&](size_t firstBlock, size_t lastBlock) {
+        for (size_t slot = 4 * firstBlock; slot < 4 * lastBlock; ++slot) {
+            if (vertexAt[slot] != kNone)
+                continue;
+            std::fill(slotNeighbours + kRegularValence * slot, slotNeighbours + kRegularValence * (slot + 1),
+                      uint32_t(sizeof(Offset)) * zeroSlot);
+            FitBlock &f = s.fit[slot / 4];
+            const int lane = int(slot % 4);
+            f.stepScale[lane] = f.nx[lane] = f.ny[lane] = f.nz[lane] = 0.0f;
+            f.base[lane] = f.sx[lane] = f.sy[lane] = f.sz[lane] = 0.0f;
         }
     });
 }
