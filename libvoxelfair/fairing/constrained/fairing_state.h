@@ -80,11 +80,11 @@ struct alignas(16) VertexNormal {
 // Step 5's arrays by slot (drift_removal.cpp), taken by takeDriftArrays and filled by
 // prepareDrift (beside the last pass's sweeps) and removeDrift.
 struct DriftArrays {
-    float *along = nullptr, *smooth = nullptr;  // n . d and the rounds' other buffer
-    float *weight = nullptr;                    // 1 / (1 + neighbours), 0 for empty slots
-    float *local = nullptr;                     // the local mean (with wide rounds)
+    float *along = nullptr, *smooth = nullptr;    // n . d and the rounds' other buffer
+    float *weight = nullptr;                      // 1 / (1 + neighbours), 0 for empty slots
+    float *local = nullptr;                       // the local mean (with wide rounds)
     float *near = nullptr, *nearSpare = nullptr;  // the averaged marks where the shape turns, a spare
-    uint32_t *others = nullptr;                 // vertices averaged over their corner lists
+    uint32_t *others = nullptr;                   // vertices averaged over their corner lists
     size_t otherCount = 0;
 };
 

@@ -60,9 +60,9 @@ VOXELFAIR_NOINLINE void fitFreeVertices(FairingState<kQuads> &s) {
     // a block's slots are of one tile's vertices (sweep_layout.cpp), so a tile's vertices alone
     // write its blocks' flags.
     s.threads.forRanges(s.V, kTileSize,
-                        [&, kind0 = kind, vertexNormal0 = vertexNormal, input0 = input, rank0 = rank,
-                         start0 = start, next0 = next, fit0 = fit, regularBlock0 = regularBlock,
-                         turning0 = turning, turned0 = turned](size_t firstVertex, size_t lastVertex) {
+                        [&, kind0 = kind, vertexNormal0 = vertexNormal, input0 = input, rank0 = rank, start0 = start,
+                         next0 = next, fit0 = fit, regularBlock0 = regularBlock, turning0 = turning,
+                         turned0 = turned](size_t firstVertex, size_t lastVertex) {
                             // (Locals: the byte stores below could alias the closure's copies.)
                             VertexKind *const kind = kind0;
                             const VertexNormal *const vertexNormal = vertexNormal0;
