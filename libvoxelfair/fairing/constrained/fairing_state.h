@@ -58,6 +58,8 @@ constexpr uint8_t kCrease = kConvex | kConcave;
 
 // The vertex-index tiles the sweeps are ordered in (see sweep_layout.cpp).
 constexpr uint32_t kTileSize = 16384;
+// FairingState::valenceGroups' entries a tile: the first of each group of valenceOrder, and the end.
+constexpr size_t kValenceGroups = 6;
 
 // Threads for a call: options.threads (0: one per hardware thread), one per kVerticesPerThread
 // vertices at most (a helper's start and wake-ups cost more than a small mesh's stages).
@@ -116,9 +118,10 @@ struct FairingState {
     }
     size_t passesBytes(size_t freeSlots) const {
         return Arena::bytes<glm::vec3>(P + 2) + Arena::bytes<VertexNormal>(V) + Arena::bytes<uint8_t>(V) +
-               Arena::bytes<uint32_t>(freeSlots) + Arena::bytes<uint32_t>(kRegularValence * freeSlots) +
-               Arena::bytes<Offset>(freeSlots + V + 1) + Arena::bytes<FitBlock>(freeSlots / 4) +
-               Arena::bytes<uint8_t>(freeSlots / 4) + featureFitBytes() + driftBytes(freeSlots + V + 1);
+               Arena::bytes<uint32_t>(V) + Arena::bytes<uint32_t>(freeSlots) +
+               Arena::bytes<uint32_t>(kRegularValence * freeSlots) + Arena::bytes<Offset>(freeSlots + V + 1) +
+               Arena::bytes<FitBlock>(freeSlots / 4) + Arena::bytes<uint8_t>(freeSlots / 4) + featureFitBytes() +
+               driftBytes(freeSlots + V + 1);
     }
     // fitFeatureVertices' lists, taken after step 3's arrays and given back each pass.
     size_t featureFitBytes() const {
@@ -191,6 +194,10 @@ struct FairingState {
     // One corner of each notch edge (edge_classes.cpp), which step 2's far levels do not cross.
     std::vector<uint32_t> notches;
     uint32_t *rank = nullptr;  // vertex -> slot (first the waves)
+    // The vertices tile by tile, in each those with 3, 4, 5, 6 neighbours, then the others, each
+    // group by index (sweep_layout.cpp); valenceGroups: kValenceGroups entries a tile.
+    uint32_t *valenceOrder = nullptr;
+    std::vector<uint32_t> valenceGroups;
 
     // Step 3, by slot (see sweep_layout.cpp).
     size_t freeSlots = 0;                  // slots of free vertices (and empty ones): whole blocks

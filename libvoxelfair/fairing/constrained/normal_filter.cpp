@@ -118,21 +118,24 @@ VOXELFAIR_NOINLINE void filterQuads(FairingState<kQuads> &s, const uint32_t *tab
 #endif
 
 // vertexNormal[v] = the sum of the normals of v's polygons (in polygon order, as a loop over the
-// polygons adding to their vertices would sum them), for v in [first, last).
-template <bool kQuads>
-void sumAtVertices(FairingState<kQuads> &s, const glm::vec3 *normal, size_t first, size_t last) {
+// polygons adding to their vertices would sum them), for the vertices order[first, last), each with
+// kCount polygons when kCount > 0 (a loop of a fixed count: its end no branch that varies).
+template <uint32_t kCount, bool kQuads>
+void sumAtVertices(FairingState<kQuads> &s, const glm::vec3 *normal, const uint32_t *order, uint32_t first,
+                   uint32_t last) {
     const uint32_t *const start = s.vertexStart, *const corners = s.vertexCorners;
     VertexNormal *const vertexNormal = s.vertexNormal;
     const Polygons<kQuads> k = s.k;
-    for (size_t v = first; v < last; ++v) {
+    for (uint32_t i = first; i < last; ++i) {
+        const uint32_t v = order[i], begin = start[v], end = kCount > 0 ? begin + kCount : start[v + 1];
 #ifdef VOXELFAIR_SSE2
         __m128 sum = _mm_setzero_ps();  // lane 3 masked off: the normals are read 16 bytes at a time
-        for (uint32_t j = start[v]; j < start[v + 1]; ++j)
+        for (uint32_t j = begin; j < end; ++j)
             sum = _mm_add_ps(sum, _mm_loadu_ps(&normal[k.polygonOf(corners[j])].x));
         _mm_store_ps(&vertexNormal[v].n.x, _mm_and_ps(sum, _mm_castsi128_ps(_mm_set_epi32(0, -1, -1, -1))));
 #else
         glm::vec3 sum(0.0f);
-        for (uint32_t j = start[v]; j < start[v + 1]; ++j)
+        for (uint32_t j = begin; j < end; ++j)
             sum += normal[k.polygonOf(corners[j])];
         vertexNormal[v] = VertexNormal{sum, 0.0f};
 #endif
@@ -168,8 +171,15 @@ VOXELFAIR_NOINLINE void filterNormals(FairingState<kQuads> &s, int levels) {
         });
         std::swap(s.normal, s.filtered);
     }
-    threads.forRanges(s.V, kGrain, [&](size_t first, size_t last) {
-        sumAtVertices(s, s.normal, first, last);
+    // (Tile by tile, the vertices by their polygons' count: FairingState::valenceOrder.)
+    threads.forRanges(s.V, kTileSize, [&](size_t first, size_t last) {
+        const uint32_t *const order = s.valenceOrder, *const group =
+                                                          s.valenceGroups.data() + kValenceGroups * (first / kTileSize);
+        sumAtVertices<3>(s, s.normal, order, group[0], group[1]);
+        sumAtVertices<4>(s, s.normal, order, group[1], group[2]);
+        sumAtVertices<5>(s, s.normal, order, group[2], group[3]);
+        sumAtVertices<6>(s, s.normal, order, group[3], group[4]);
+        sumAtVertices<0>(s, s.normal, order, group[4], group[5]);
         normalizeAll(&s.vertexNormal[first].n, last - first, sizeof(VertexNormal));
     });
 }

@@ -29,6 +29,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstring>
+#include <type_traits>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -59,87 +60,104 @@ VOXELFAIR_NOINLINE void fitFreeVertices(FairingState<kQuads> &s) {
     // Vertex by vertex, each writing its own slot's lane, tile by tile split between the threads:
     // a block's slots are of one tile's vertices (sweep_layout.cpp), so a tile's vertices alone
     // write its blocks' flags.
-    s.threads.forRanges(s.V, kTileSize,
-                        [&, kind0 = kind, vertexNormal0 = vertexNormal, input0 = input, rank0 = rank, start0 = start,
-                         next0 = next, fit0 = fit, regularBlock0 = regularBlock, turning0 = turning,
-                         turned0 = turned](size_t firstVertex, size_t lastVertex) {
-                            // (Locals: the byte stores below could alias the closure's copies.)
-                            VertexKind *const kind = kind0;
-                            const VertexNormal *const vertexNormal = vertexNormal0;
-                            const glm::vec3 *const input = input0;
-                            const uint32_t *const rank = rank0, *const start = start0, *const next = next0;
-                            FitBlock *const fit = fit0;
-                            uint8_t *const regularBlock = regularBlock0, *const turning = turning0;
-                            const float turned = turned0;
-                            bool turns = false;
-                            for (size_t v = firstVertex; v < lastVertex; ++v) {
-                                if (!isFree(kind[v]))
-                                    continue;
-                                float sum2 = 0.0f, base = 0.0f, minE2 = 4.0f;
-                                bool allUsed = true;
+    s.threads.forRanges(
+        s.V, kTileSize,
+        [&, kind0 = kind, vertexNormal0 = vertexNormal, input0 = input, rank0 = rank, start0 = start, next0 = next,
+         fit0 = fit, regularBlock0 = regularBlock, turning0 = turning, turned0 = turned, valenceOrder0 = s.valenceOrder,
+         valenceGroups0 = s.valenceGroups.data()](size_t firstVertex, size_t) {
+            // (Locals: the byte stores below could alias the closure's copies.)
+            VertexKind *const kind = kind0;
+            const VertexNormal *const vertexNormal = vertexNormal0;
+            const glm::vec3 *const input = input0;
+            const uint32_t *const rank = rank0, *const start = start0, *const next = next0;
+            FitBlock *const fit = fit0;
+            uint8_t *const regularBlock = regularBlock0, *const turning = turning0;
+            const float turned = turned0;
+            bool turns = false;
+            // One vertex; its neighbours' count a constant where kCount > 0 (the
+            // loop's end then no branch that varies from vertex to vertex).
+            auto fitVertex = [&](uint32_t v, auto used) {
+                constexpr uint32_t kCount = decltype(used)::value;
+                if (!isFree(kind[v]))
+                    return;
+                const uint32_t first = start[v], count = kCount > 0 ? kCount : start[v + 1] - first;
+                float sum2 = 0.0f, base = 0.0f, minE2 = 4.0f;
+                bool allUsed = true;
 #ifdef VOXELFAIR_SSE2
-                                // (Vertex normals are 16-byte blocks with a zero fourth float: whole loads.)
-                                auto normalOf = [vertexNormal](uint32_t u) {
-                                    return _mm_load_ps(&vertexNormal[u].n.x);
-                                };
-                                const __m128 n = normalOf(uint32_t(v)), x = load3(input[v]);
-                                __m128 sumS = _mm_setzero_ps(), products = sumS;  // base: the sum of products' lanes
-                                for (uint32_t i = start[v]; i < start[v + 1]; ++i) {
-                                    const uint32_t u = next[i];
-                                    const __m128 e = _mm_add_ps(n, isFree(kind[u]) ? normalOf(u) : n);
-                                    const float e2 = dot3(e, e);
-                                    minE2 = std::min(minE2, e2);
-                                    if (!(e2 > 2.0f)) {
-                                        allUsed = false;
-                                        continue;
-                                    }
-                                    sum2 += e2;
-                                    sumS = _mm_add_ps(sumS, e);
-                                    products = _mm_add_ps(products, _mm_mul_ps(e, _mm_sub_ps(load3(input[u]), x)));
-                                }
-                                base = dot3(products, _mm_set1_ps(1.0f));
-                                alignas(16) float nOut[4], sOut[4];
-                                _mm_store_ps(nOut, n);
-                                _mm_store_ps(sOut, sumS);
+                // (Vertex normals are 16-byte blocks with a zero fourth float: whole loads.)
+                auto normalOf = [vertexNormal](uint32_t u) { return _mm_load_ps(&vertexNormal[u].n.x); };
+                const __m128 n = normalOf(uint32_t(v)), x = load3(input[v]);
+                __m128 sumS = _mm_setzero_ps(), products = sumS;  // base: the sum of products' lanes
+                for (uint32_t i = first; i < first + count; ++i) {
+                    const uint32_t u = next[i];
+                    const __m128 e = _mm_add_ps(n, isFree(kind[u]) ? normalOf(u) : n);
+                    const float e2 = dot3(e, e);
+                    minE2 = std::min(minE2, e2);
+                    if (!(e2 > 2.0f)) {
+                        allUsed = false;
+                        continue;
+                    }
+                    sum2 += e2;
+                    sumS = _mm_add_ps(sumS, e);
+                    products = _mm_add_ps(products, _mm_mul_ps(e, _mm_sub_ps(load3(input[u]), x)));
+                }
+                base = dot3(products, _mm_set1_ps(1.0f));
+                alignas(16) float nOut[4], sOut[4];
+                _mm_store_ps(nOut, n);
+                _mm_store_ps(sOut, sumS);
 #else
-        const glm::vec3 n = vertexNormal[v].n;
-        glm::vec3 sumS(0.0f);
-        for (uint32_t i = start[v]; i < start[v + 1]; ++i) {
-            const uint32_t u = next[i];
-            const glm::vec3 e = s.edgeTerm(n, u);
-            const float e2 = glm::dot(e, e);
-            minE2 = std::min(minE2, e2);
-            if (!(e2 > 2.0f)) {
-                allUsed = false;
-                continue;
-            }
-            sum2 += e2;
-            sumS += e;
-            base += glm::dot(e, input[u] - input[v]);
-        }
-        const float nOut[3] = {n.x, n.y, n.z}, sOut[3] = {sumS.x, sumS.y, sumS.z};
+                const glm::vec3 n = vertexNormal[v].n;
+                glm::vec3 sumS(0.0f);
+                for (uint32_t i = first; i < first + count; ++i) {
+                    const uint32_t u = next[i];
+                    const glm::vec3 e = s.edgeTerm(n, u);
+                    const float e2 = glm::dot(e, e);
+                    minE2 = std::min(minE2, e2);
+                    if (!(e2 > 2.0f)) {
+                        allUsed = false;
+                        continue;
+                    }
+                    sum2 += e2;
+                    sumS += e;
+                    base += glm::dot(e, input[u] - input[v]);
+                }
+                const float nOut[3] = {n.x, n.y, n.z}, sOut[3] = {sumS.x, sumS.y, sumS.z};
 #endif
-                                const uint32_t slot = rank[v];
-                                turning[v] = minE2 < turned;
-                                turns = turns || minE2 < turned;
-                                if (!allUsed)
-                                    kind[v] = VertexKind::FreeIrregular;
-                                if (kind[v] != VertexKind::Free)
-                                    regularBlock[slot / 4] = 0;
-                                FitBlock &f = fit[slot / 4];
-                                const int lane = int(slot % 4);
-                                f.stepScale[lane] = sum2 > 0.0f ? 2.0f / sum2 : 0.0f;
-                                f.nx[lane] = nOut[0];
-                                f.ny[lane] = nOut[1];
-                                f.nz[lane] = nOut[2];
-                                f.base[lane] = base;
-                                f.sx[lane] = sOut[0];
-                                f.sy[lane] = sOut[1];
-                                f.sz[lane] = sOut[2];
-                            }
-                            if (turns)
-                                anyTurning.store(true, std::memory_order_relaxed);
-                        });
+                const uint32_t slot = rank[v];
+                turning[v] = minE2 < turned;
+                turns = turns || minE2 < turned;
+                if (!allUsed)
+                    kind[v] = VertexKind::FreeIrregular;
+                if (kind[v] != VertexKind::Free)
+                    regularBlock[slot / 4] = 0;
+                FitBlock &f = fit[slot / 4];
+                const int lane = int(slot % 4);
+                f.stepScale[lane] = sum2 > 0.0f ? 2.0f / sum2 : 0.0f;
+                f.nx[lane] = nOut[0];
+                f.ny[lane] = nOut[1];
+                f.nz[lane] = nOut[2];
+                f.base[lane] = base;
+                f.sx[lane] = sOut[0];
+                f.sy[lane] = sOut[1];
+                f.sz[lane] = sOut[2];
+            };
+            // The tile's vertices by neighbour count (buildSlots: 3, 4, 5, 6, others).
+            const uint32_t *const order = valenceOrder0;
+            const uint32_t *const group = valenceGroups0 + kValenceGroups * (firstVertex / kTileSize);
+            using Count = uint32_t;
+            for (uint32_t i = group[0]; i < group[1]; ++i)
+                fitVertex(order[i], std::integral_constant<Count, 3>());
+            for (uint32_t i = group[1]; i < group[2]; ++i)
+                fitVertex(order[i], std::integral_constant<Count, 4>());
+            for (uint32_t i = group[2]; i < group[3]; ++i)
+                fitVertex(order[i], std::integral_constant<Count, 5>());
+            for (uint32_t i = group[3]; i < group[4]; ++i)
+                fitVertex(order[i], std::integral_constant<Count, 6>());
+            for (uint32_t i = group[4]; i < group[5]; ++i)
+                fitVertex(order[i], std::integral_constant<Count, 0>());
+            if (turns)
+                anyTurning.store(true, std::memory_order_relaxed);
+        });
     s.anyTurning = anyTurning.load();
     // n . d with this pass's normals, slot by slot.
     Offset *const offset = s.offset;

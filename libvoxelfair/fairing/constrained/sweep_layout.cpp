@@ -15,7 +15,11 @@
 // vertexAt = kNone), then the other vertices, then one zero slot. Takes step 3's arrays by slot
 // (offset zeroed, vertexNormal, filtered, fit, slotNeighbours as byte offsets of the neighbours'
 // Offset, the zero slot where fewer than kRegularValence, regularBlock) so a sweep streams
-// through memory. Empty slots read the zero slot and have a zero fit: they move by 0.
+// through memory. Empty slots read the zero slot and have a zero fit: they move by 0. Also each
+// tile's vertices grouped by neighbour count (valenceOrder, valenceGroups), for the vertex loops
+// of fitFreeVertices and filterNormals: a loop over a count that varies from vertex to vertex in
+// no pattern ends in a mispredicted branch (callgrind --branch-sim=yes on the benchmark's sphere:
+// 273,000 a call in fitFreeVertices, 114,000 in filterNormals; about 200 after).
 #include "fairing/constrained/fairing_state.h"
 
 #include <algorithm>
@@ -87,6 +91,30 @@ VOXELFAIR_NOINLINE void buildSlots(FairingState<kQuads> &s) {
     s.vertexNormal = s.scratch.template take<VertexNormal>(V);
     s.turning = s.scratch.template take<uint8_t>(V);
     std::fill(s.turning, s.turning + V, uint8_t(0));
+    // Each tile's vertices by neighbour count (fitFreeVertices, filterNormals: loops of a fixed count).
+    uint32_t *const order = s.valenceOrder = s.scratch.template take<uint32_t>(V);
+    s.valenceGroups.assign(kValenceGroups * tiles, 0);
+    uint32_t *const groups = s.valenceGroups.data();
+    {
+        const uint32_t *const start = s.vertexStart;
+        s.threads.run(tiles, [start, order, groups, V](size_t tile) {
+            const size_t tileStart = tile * kTileSize, tileEnd = std::min(V, tileStart + kTileSize);
+            auto group = [start](size_t v) {
+                const uint32_t count = start[v + 1] - start[v];
+                return count >= 3 && count <= kRegularValence ? count - 3 : kRegularValence - 2;
+            };
+            uint32_t *const first = groups + kValenceGroups * tile;  // counts, then each group's first
+            for (size_t v = tileStart; v < tileEnd; ++v)
+                ++first[group(v) + 1];
+            first[0] = uint32_t(tileStart);
+            for (size_t g = 1; g < kValenceGroups; ++g)
+                first[g] += first[g - 1];
+            uint32_t fill[kValenceGroups];
+            std::copy(first, first + kValenceGroups, fill);
+            for (size_t v = tileStart; v < tileEnd; ++v)
+                order[fill[group(v)]++] = uint32_t(v);
+        });
+    }
     s.slotNeighbours = s.scratch.template take<uint32_t>(kRegularValence * freeSlots);
     s.offset = s.scratch.template take<Offset>(zeroSlot + 1);
     Offset *const offset = s.offset;
