@@ -19,6 +19,7 @@ bash "$here/voxelfair.sh" setup
 cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release -DVOXELFAIR_NO_SIMD=ON \
   -DVOXELFAIR_BUILD_PLUGINS=OFF -DVOXELFAIR_BUILD_BENCHMARKS=OFF -DVOXELFAIR_BUILD_TESTS=ON >/dev/null
 targets=(fairing_test fairing_fidelity_test fairing_constrained_test fairing_family_test fairing_simd_equivalence_test
+  fairing_information_limit_test
   maps_test)
 cmake --build "$build" -j"$jobs" --target "${targets[@]}"
 ctest --test-dir "$build" --output-on-failure -j"$jobs" -R '^(fairing_|maps_test\.)' "$@"
