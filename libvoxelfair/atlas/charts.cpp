@@ -1,6 +1,7 @@
 #include "atlas/charts.h"
 
 #include "atlas/chart_merge.h"
+#include "atlas/chart_split.h"
 #include "atlas/chart_overlap.h"
 #include "atlas/edge_adjacency.h"
 #include "atlas/seed_plane.h"
@@ -287,6 +288,10 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
     merge.mostFaces = options.mergeFaces;
     merge.minCosine = std::max(0.05f, std::min(options.mergeCosine, cone));
     out.mergedCharts = mergeSmallCharts(mesh, adjacency.opposite.data(), normals.data(), merge, out);
+    // Rings and long diagonals into compact pieces (chart_split.h).
+    ChartSplitOptions split;
+    split.minFill = options.minChartFill;
+    splitSparseCharts(adjacency.opposite.data(), split, out);
     return out;
 }
 

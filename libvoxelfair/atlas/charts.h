@@ -53,6 +53,10 @@ struct ChartOptions {
     // overlap none of its faces there. 0 turns merging off.
     size_t mergeFaces = 8;
     float mergeCosine = 0.5f;
+    // Beyond the paper (chart_split.h): a chart whose faces cover less than minChartFill of its
+    // bounding box (a ring of thin bars, a long diagonal bar) is cut by recursive bisection into
+    // pieces that cover at least that much. Default 1/8; 0 cuts none.
+    float minChartFill = 0.125f;
     // Threads (0: one per hardware thread): the faces' edge adjacency is built beside their
     // normals and seed order on a second one. The charts are the same for any count.
     int threads = 0;
@@ -79,6 +83,7 @@ struct AtlasCharts {
     size_t ignoredNormals = 0;      // given normals not finite, zero, or outside the face's own cone
     size_t foldedCharts = 0;        // times a chart winding over itself in UV was cut back
     size_t mergedCharts = 0;        // small charts moved into a neighbour (chart_merge.h)
+    size_t splitCharts = 0;         // sparse charts cut into pieces (chart_split.h)
     size_t separatedFaces = 0;      // thin faces given their own chart for crisp colours (crowded_faces.h)
     size_t nonManifoldEdges = 0;    // edges of three or more faces, used as chart borders
     size_t borderEdges = 0;         // edges of one face (open meshes)

@@ -10,7 +10,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <random>
 #include <set>
@@ -18,6 +20,7 @@
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
 using namespace voxelfair;
 using namespace voxelfair::atlastest;
@@ -392,6 +395,126 @@ TEST(Charts, SmallChartsMoveIntoTheirNeighbours) {
         expectValidAtlas(mesh, charts, packCharts(charts), kMergeCone);
     }
     EXPECT_LT(after, before);
+}
+
+// Flat cells (i, j) of an n x n grid for which `in` holds, as two triangles each, in the plane
+// turned by `turn` and moved by `offset`: one chart, whatever its shape.
+TestMesh planarCells(const std::string &name, int n, const std::function<bool(int, int)> &in, const glm::dmat3 &turn,
+                     const glm::dvec3 &offset) {
+    TestMesh m;
+    m.name = name;
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i)
+            m.positions.push_back(glm::vec3(turn * glm::dvec3(i, j, 0) + offset));
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i)
+            if (in(i, j)) {
+                const uint32_t a = uint32_t(j * (n + 1) + i), b = a + 1, c = a + uint32_t(n + 1) + 1, d = c - 1;
+                m.triangles.insert(m.triangles.end(), {a, b, c, a, c, d});
+                m.faceColours.push_back({uint8_t(i), uint8_t(j), 9});
+                m.faceColours.push_back({uint8_t(i), uint8_t(j), 9});
+            }
+    computeVertexColours(m);
+    return m;
+}
+
+// Rings (square frames), diagonal staircases and L shapes of random sizes in random planes
+// (fixed seed): the one chart each makes is cut when it covers under 1/8 of its box, into pieces
+// that cover at least 1/8 of theirs (or are single faces), each edge-connected, every face in
+// exactly one, its UVs those of the uncut chart up to one shift per piece; a compact chart with a
+// hole stays whole.
+TEST(Charts, SparseChartsAreCutIntoCompactPieces) {
+    std::mt19937_64 random(20261126);
+    std::uniform_int_distribution<int> widthOf(1, 2), extra(0, 30);
+    std::uniform_real_distribution<double> angle(0.0, 6.283185307179586);
+    std::vector<TestMesh> sparse;
+    for (int k = 0; k < 4; ++k) {
+        // At least 36 widths long: a ring covers under 4 w / n = 1/9 of its box, an L or a staircase less.
+        const int w = widthOf(random), n = 36 * w + extra(random);
+        const glm::dmat3 turn = glm::dmat3(glm::rotate(glm::dmat4(1.0), angle(random), glm::dvec3(0.3, 1.0, 0.2))) *
+                                glm::dmat3(glm::rotate(glm::dmat4(1.0), angle(random), glm::dvec3(1.0, 0.0, 0.4)));
+        const glm::dvec3 offset(angle(random), angle(random), angle(random));
+        sparse.push_back(planarCells(
+            "ring " + std::to_string(k), n, [n, w](int i, int j) { return i < w || j < w || i >= n - w || j >= n - w; },
+            turn, offset));
+        sparse.push_back(planarCells(
+            "staircase " + std::to_string(k), n, [w](int i, int j) { return j >= i && j < i + w + 1; }, turn, offset));
+        sparse.push_back(planarCells(
+            "L " + std::to_string(k), n, [w](int i, int j) { return i < w || j < w; }, turn, offset));
+    }
+    for (const TestMesh &mesh : sparse) {
+        SCOPED_TRACE(mesh.name);
+        ChartOptions whole;
+        whole.minChartFill = 0;
+        const AtlasCharts before = computeCharts(mesh.view(), whole), after = computeCharts(mesh.view());
+        ASSERT_EQ(before.chartCount(), 1u);
+        // Cut exactly when the chart covers under 1/8 of its box in its own projection (a
+        // staircase the projection happens to lay along an axis is compact there).
+        double chartArea = 0;
+        for (size_t i = 0; i < before.chartFaces.size(); ++i) {
+            const glm::vec2 *uv = &before.wedgeUv[3 * i];
+            chartArea += 0.5 * std::fabs(double(uv[1].x - uv[0].x) * (uv[2].y - uv[0].y) -
+                                         double(uv[1].y - uv[0].y) * (uv[2].x - uv[0].x));
+        }
+        const bool isSparse = chartArea < 0.125 * double(before.chartSize[0].x) * double(before.chartSize[0].y);
+        EXPECT_TRUE(isSparse || mesh.name.rfind("staircase", 0) == 0);
+        EXPECT_EQ(after.splitCharts, isSparse ? 1u : 0u);
+        EXPECT_EQ(after.chartCount() > 1, isSparse);
+        std::vector<int> seen(mesh.faceCount(), 0);
+        std::vector<uint32_t> entryBefore(mesh.faceCount());
+        for (size_t i = 0; i < before.chartFaces.size(); ++i)
+            entryBefore[before.chartFaces[i]] = uint32_t(i);
+        const EdgeAdjacency adjacency =
+            buildEdgeAdjacency(mesh.triangles.data(), mesh.faceCount(), mesh.positions.size());
+        for (size_t c = 0; c < after.chartCount(); ++c) {
+            const uint32_t first = after.chartFirstFace[c], end = after.chartFirstFace[c + 1];
+            glm::vec2 lo(1e30f), hi(-1e30f);
+            double area = 0;
+            for (uint32_t i = first; i < end; ++i) {
+                const uint32_t f = after.chartFaces[i];
+                ++seen[f];
+                EXPECT_EQ(after.faceChart[f], c);
+                const glm::vec2 *uv = &after.wedgeUv[3 * size_t(i)];
+                for (int k = 0; k < 3; ++k)
+                    lo = glm::min(lo, uv[k]), hi = glm::max(hi, uv[k]);
+                area += 0.5 * std::fabs(double(uv[1].x - uv[0].x) * (uv[2].y - uv[0].y) -
+                                        double(uv[1].y - uv[0].y) * (uv[2].x - uv[0].x));
+                // The uncut chart's UVs, shifted alike for the whole piece.
+                const uint32_t j = entryBefore[f];
+                const glm::vec2 shift =
+                    after.wedgeUv[3 * size_t(first)] - before.wedgeUv[3 * size_t(entryBefore[after.chartFaces[first]])];
+                for (int k = 0; k < 3; ++k)
+                    EXPECT_LE(glm::length(uv[k] - before.wedgeUv[3 * size_t(j) + k] - shift), 1e-4f);
+            }
+            EXPECT_LE(glm::length(lo), 1e-4f) << "piece " << c << " is not at the origin";
+            EXPECT_LE(glm::length(hi - after.chartSize[c]), 1e-4f);
+            EXPECT_TRUE(end - first == 1 || area >= 0.125 * double(hi.x - lo.x) * double(hi.y - lo.y) - 1e-6)
+                << "piece " << c << " covers " << area / (double(hi.x - lo.x) * double(hi.y - lo.y));
+            // Edge-connected.
+            std::set<uint32_t> reached = {after.chartFaces[first]};
+            std::vector<uint32_t> stack = {after.chartFaces[first]};
+            while (!stack.empty()) {
+                const uint32_t f = stack.back();
+                stack.pop_back();
+                for (int k = 0; k < 3; ++k) {
+                    const uint32_t o = adjacency.opposite[3 * f + k];
+                    if (o != kNoOpposite && after.faceChart[o / 3] == c && reached.insert(o / 3).second)
+                        stack.push_back(o / 3);
+                }
+            }
+            EXPECT_EQ(reached.size(), end - first) << "piece " << c << " is not edge-connected";
+        }
+        for (size_t f = 0; f < mesh.faceCount(); ++f)
+            EXPECT_EQ(seen[f], 1) << "face " << f;
+        expectValidAtlas(mesh, after, packCharts(after), ChartOptions().minSeedCosine);
+    }
+    // A 12 x 12 square with a 4 x 4 hole covers 8/9 of its box: one chart, as before.
+    const TestMesh holed = planarCells(
+        "holed square", 12, [](int i, int j) { return !(i >= 4 && i < 8 && j >= 4 && j < 8); }, glm::dmat3(1.0),
+        glm::dvec3(0.0));
+    const AtlasCharts charts = computeCharts(holed.view());
+    EXPECT_EQ(charts.chartCount(), 1u);
+    EXPECT_EQ(charts.splitCharts, 0u);
 }
 
 TEST(Charts, RawVoxelSurfacesSplitIntoPlanarRegions) {

@@ -1,0 +1,194 @@
+// Sparse charts cut by recursive bisection; the contract is in chart_split.h.
+#include "atlas/chart_split.h"
+
+#include "atlas/edge_adjacency.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include <glm/common.hpp>
+
+namespace voxelfair {
+namespace {
+
+struct Box {
+    glm::vec2 lo{std::numeric_limits<float>::max()}, hi{-std::numeric_limits<float>::max()};
+    double area = 0;  // the faces' projected area
+    double fill() const {
+        const double box = double(hi.x - lo.x) * double(hi.y - lo.y);
+        return box > 0 ? area / box : 1.0;
+    }
+};
+
+Box boxOf(const AtlasCharts &charts, const std::vector<uint32_t> &entries) {
+    Box b;
+    for (uint32_t i : entries) {
+        const glm::vec2 *uv = &charts.wedgeUv[3 * size_t(i)];
+        for (int k = 0; k < 3; ++k)
+            b.lo = glm::min(b.lo, uv[k]), b.hi = glm::max(b.hi, uv[k]);
+        const glm::dvec2 e1 = glm::dvec2(uv[1]) - glm::dvec2(uv[0]), e2 = glm::dvec2(uv[2]) - glm::dvec2(uv[0]);
+        b.area += 0.5 * std::fabs(e1.x * e2.y - e1.y * e2.x);
+    }
+    return b;
+}
+
+}  // namespace
+
+size_t splitSparseCharts(const uint32_t *opposite, const ChartSplitOptions &options, AtlasCharts &charts) {
+    if (!(options.minFill > 0) || charts.chartCount() == 0)
+        return 0;
+    const size_t chartCount = charts.chartCount();
+    // Charts to cut, found first: most models have none, and then nothing is rebuilt.
+    std::vector<uint32_t> entries;
+    std::vector<char> sparse(chartCount, 0);
+    bool any = false;
+    for (size_t c = 0; c < chartCount; ++c) {
+        const uint32_t first = charts.chartFirstFace[c], end = charts.chartFirstFace[c + 1];
+        if (charts.isDegenerate(c) || end - first < 2)
+            continue;
+        entries.resize(end - first);
+        for (uint32_t i = first; i < end; ++i)
+            entries[i - first] = i;
+        sparse[c] = boxOf(charts, entries).fill() < double(options.minFill);
+        any = any || sparse[c];
+    }
+    if (!any)
+        return 0;
+
+    // Entry (position in chartFaces) of each face, and the piece each entry of the chart being
+    // cut is in (a label per entry; UINT32_MAX: another chart).
+    std::vector<uint32_t> entryOf(charts.faceCount(), UINT32_MAX);
+    for (size_t i = 0; i < charts.chartFaces.size(); ++i)
+        entryOf[charts.chartFaces[i]] = uint32_t(i);
+    std::vector<uint32_t> label(charts.chartFaces.size(), UINT32_MAX);
+    uint32_t nextLabel = 0;
+
+    AtlasCharts rebuilt;
+    rebuilt.faceChart.resize(charts.faceCount());
+    rebuilt.chartFaces.reserve(charts.chartFaces.size());
+    rebuilt.wedgeUv.reserve(charts.wedgeUv.size());
+    // A piece (entries in chart order) becomes a chart, moved to the origin unless it is the whole chart.
+    auto emit = [&](size_t c, const std::vector<uint32_t> &piece, const Box *box) {
+        const uint32_t chart = uint32_t(rebuilt.chartAxis.size());
+        rebuilt.chartAxis.push_back(charts.chartAxis[c]);
+        rebuilt.chartFirstFace.push_back(uint32_t(rebuilt.chartFaces.size()));
+        const glm::vec2 lo = box ? box->lo : glm::vec2(0.0f);
+        rebuilt.chartSize.push_back(box ? box->hi - box->lo : charts.chartSize[c]);
+        for (uint32_t i : piece) {
+            const uint32_t f = charts.chartFaces[i];
+            rebuilt.faceChart[f] = chart;
+            rebuilt.chartFaces.push_back(f);
+            for (int k = 0; k < 3; ++k)
+                rebuilt.wedgeUv.push_back(charts.wedgeUv[3 * size_t(i) + k] - lo);
+        }
+    };
+
+    // The edge-connected parts of `side` (entries labelled `side`'s label), each in chart order.
+    auto parts = [&](const std::vector<uint32_t> &side, std::vector<std::vector<uint32_t>> &out) {
+        const uint32_t from = nextLabel;
+        const uint32_t sideLabel = label[side[0]];
+        std::vector<uint32_t> queue;
+        for (uint32_t seed : side) {
+            if (label[seed] != sideLabel)
+                continue;  // already in a part
+            const uint32_t part = nextLabel++;
+            label[seed] = part;
+            queue.assign(1, seed);
+            for (size_t q = 0; q < queue.size(); ++q) {
+                const uint32_t f = charts.chartFaces[queue[q]];
+                for (int k = 0; k < 3; ++k) {
+                    const uint32_t h = opposite[3 * size_t(f) + size_t(k)];
+                    if (h == kNoOpposite)
+                        continue;
+                    const uint32_t e = entryOf[h / 3];
+                    if (label[e] == sideLabel)
+                        label[e] = part, queue.push_back(e);
+                }
+            }
+        }
+        const size_t first = out.size();
+        out.resize(first + (nextLabel - from));
+        for (uint32_t i : side)
+            out[first + (label[i] - from)].push_back(i);
+    };
+
+    size_t cut = 0;
+    std::vector<std::vector<uint32_t>> stack, done;
+    for (size_t c = 0; c < chartCount; ++c) {
+        const uint32_t first = charts.chartFirstFace[c], end = charts.chartFirstFace[c + 1];
+        std::vector<uint32_t> all(end - first);
+        for (uint32_t i = first; i < end; ++i)
+            all[i - first] = i;
+        if (!sparse[c]) {
+            emit(c, all, nullptr);
+            continue;
+        }
+        ++cut;
+        for (uint32_t i : all)
+            label[i] = nextLabel;
+        ++nextLabel;
+        stack.clear();
+        stack.push_back(std::move(all));
+        done.clear();
+        while (!stack.empty()) {
+            std::vector<uint32_t> piece = std::move(stack.back());
+            stack.pop_back();
+            const Box box = boxOf(charts, piece);
+            if (piece.size() < 2 || box.fill() >= double(options.minFill)) {
+                done.push_back(std::move(piece));
+                continue;
+            }
+            // Across the longer side, at its middle; by the centroids' median if one side is empty.
+            const int axis = box.hi.x - box.lo.x >= box.hi.y - box.lo.y ? 0 : 1;
+            std::vector<float> centre(piece.size());
+            for (size_t j = 0; j < piece.size(); ++j) {
+                const glm::vec2 *uv = &charts.wedgeUv[3 * size_t(piece[j])];
+                centre[j] = (uv[0][axis] + uv[1][axis] + uv[2][axis]) / 3.0f;
+            }
+            float mid = 0.5f * (box.lo[axis] + box.hi[axis]);
+            const size_t below = size_t(std::count_if(centre.begin(), centre.end(), [&](float v) { return v < mid; }));
+            if (below == 0 || below == piece.size()) {
+                std::vector<float> sorted = centre;
+                std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(sorted.size() / 2), sorted.end());
+                mid = sorted[sorted.size() / 2];
+                if (std::count_if(centre.begin(), centre.end(), [&](float v) { return v < mid; }) == 0) {
+                    done.push_back(std::move(piece));  // every centroid the same: cannot be cut
+                    continue;
+                }
+            }
+            std::vector<uint32_t> sides[2];
+            const uint32_t lowLabel = nextLabel++, highLabel = nextLabel++;
+            for (size_t j = 0; j < piece.size(); ++j) {
+                const bool low = centre[j] < mid;
+                label[piece[j]] = low ? lowLabel : highLabel;
+                sides[low ? 0 : 1].push_back(piece[j]);
+            }
+            std::vector<std::vector<uint32_t>> split;
+            for (const std::vector<uint32_t> &side : sides)
+                parts(side, split);
+            for (std::vector<uint32_t> &p : split)
+                stack.push_back(std::move(p));
+        }
+        std::sort(done.begin(), done.end(),
+                  [](const std::vector<uint32_t> &a, const std::vector<uint32_t> &b) { return a[0] < b[0]; });
+        for (std::vector<uint32_t> &piece : done) {
+            std::sort(piece.begin(), piece.end());
+            const Box box = boxOf(charts, piece);
+            emit(c, piece, &box);
+        }
+    }
+    rebuilt.chartFirstFace.push_back(uint32_t(rebuilt.chartFaces.size()));
+
+    charts.chartFirstFace.swap(rebuilt.chartFirstFace);
+    charts.chartFaces.swap(rebuilt.chartFaces);
+    charts.faceChart.swap(rebuilt.faceChart);
+    charts.chartAxis.swap(rebuilt.chartAxis);
+    charts.chartSize.swap(rebuilt.chartSize);
+    charts.wedgeUv.swap(rebuilt.wedgeUv);
+    charts.splitCharts += cut;
+    return cut;
+}
+
+}  // namespace voxelfair
