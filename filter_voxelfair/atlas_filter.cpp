@@ -3,6 +3,8 @@
 #include "map_files.h"
 #include "meshlab_arrays.h"
 
+#include "../io_vxl/scene_to_meshlab.h"
+
 #include "atlas/texture_atlas.h"
 #include "base/error.h"
 #include "fairing/voxel_size.h"
@@ -57,6 +59,7 @@ bool FilterVoxelfairPlugin::applyTextureAtlas(MeshModel &m, const RichParameterL
     options.pack.mode = parameters.getEnum("packing") == 1 ? PackMode::Paper : PackMode::Tight;
     float voxelSize = parameters.getFloat("voxelSize");
     std::vector<float> faceScale;
+    QString voxelNote = "given";  // where the voxel size came from, for the log
     if (voxelSize <= 0.0f) {
         // Each part's voxels get the same texels: parts may be scaled differently (an HVA frame
         // can shrink a section to 1%). The density is that of the largest part, and the others'
@@ -65,19 +68,36 @@ bool FilterVoxelfairPlugin::applyTextureAtlas(MeshModel &m, const RichParameterL
         const std::vector<PartArrays> parts = splitByPart(arrays, m.cm);
         const PartArrays *largest = nullptr;
         std::vector<float> partVoxel(parts.size());
+        size_t fromImport = 0;  // parts whose size is the importer's
         for (size_t k = 0; k < parts.size(); ++k) {
             const PartArrays &part = parts[k];
             if (largest == nullptr || part.polygonCount() > largest->polygonCount())
                 largest = &part;
+            // The importer's measure where the mesh still has it: a faired thin part's
+            // cross-sections would outnumber its voxel edges (fairing/voxel_size.h).
+            const float imported = importedVoxelSize(m.cm, part.part);
             partVoxel[k] = detectVoxelSize({part.positions.data(), part.positions.size(), part.polygonOffsets.data(),
-                                            part.polygonIndices.data(), part.polygonCount()});
+                                            part.polygonIndices.data(), part.polygonCount()},
+                                           imported);
+            fromImport += imported > 0.0f && partVoxel[k] == imported;
         }
-        voxelSize =
-            largest ? partVoxel[size_t(largest - parts.data())]
-                    : detectVoxelSize({arrays.positions.data(), arrays.positions.size(), arrays.polygonOffsets.data(),
-                                       arrays.polygonIndices.data(), arrays.polygonCount()});
+        if (largest) {
+            voxelSize = partVoxel[size_t(largest - parts.data())];
+        } else {  // one part (or none recorded)
+            const float imported = importedVoxelSize(m.cm, commonPart(m.cm));
+            voxelSize = detectVoxelSize({arrays.positions.data(), arrays.positions.size(), arrays.polygonOffsets.data(),
+                                         arrays.polygonIndices.data(), arrays.polygonCount()},
+                                        imported);
+            fromImport = imported > 0.0f && voxelSize == imported;
+        }
         if (!(voxelSize > 0.0f) || !std::isfinite(voxelSize))
             voxelSize = 1.0f;
+        voxelNote = fromImport == 0 ? QString("detected")
+                    : fromImport == std::max<size_t>(1, parts.size())
+                        ? QString("from the import")
+                        : QString("from the import for %1 of %2 parts, detected for the others")
+                              .arg(fromImport)
+                              .arg(parts.size());
         // Part number -> texel scale (part numbers are small, as splitByPart assumes).
         std::vector<float> scaleOfPart;
         for (size_t k = 0; k < parts.size(); ++k) {
@@ -158,7 +178,10 @@ bool FilterVoxelfairPlugin::applyTextureAtlas(MeshModel &m, const RichParameterL
                .arg(atlas.charts.chartCount())
                .arg(QString("%1 x %2").arg(atlas.layout.width).arg(atlas.layout.height))
                .arg(atlas.layout.texelsPerUnit * double(voxelSize), 0, 'g', 3)
-               .arg(atlas.layout.densityReduced ? " (reduced to fit the maximum size)" : "")
+               .arg(QString(" (voxel size %1, %2)%3")
+                        .arg(double(voxelSize), 0, 'g', 4)
+                        .arg(voxelNote)
+                        .arg(atlas.layout.densityReduced ? " (reduced to fit the maximum size)" : ""))
                .arg(toString(atlas.layout.mode))
                .arg(toString(atlas.texture.source))
                .arg(atlas.texture.note.empty() ? QString()

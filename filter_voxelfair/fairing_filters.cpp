@@ -2,12 +2,15 @@
 #include "filter_voxelfair_plugin.h"
 #include "meshlab_arrays.h"
 
+#include "../io_vxl/scene_to_meshlab.h"
+
 #include "attributes/face_normals.h"
 #include "base/error.h"
 #include "attributes/vertex_colours.h"
 #include "attributes/vertex_normals.h"
 #include "fairing/constrained_fairing.h"
 #include "fairing/lanczos_fairing.h"
+#include "fairing/voxel_size.h"
 
 #include <QElapsedTimer>
 
@@ -36,11 +39,15 @@ struct FairingSummary {
 };
 
 // Runs the chosen mode on one set of polygon arrays; throws voxelfair::Error on bad input.
+// `imported`: the voxel size the importer measured for these polygons (0: none), taken while
+// the mesh still has edges of that length (a mesh faired once already may not say it itself).
 void fairArrays(bool constrained, const RichParameterList &parameters, std::vector<glm::vec3> &positions,
                 const std::vector<uint32_t> &offsets, const std::vector<uint32_t> &indices, const uint8_t *selected,
-                FairingSummary &summary) {
+                float imported, FairingSummary &summary) {
     const MutablePolygonMesh mesh = mutablePolygonMesh(positions, offsets, indices);
-    const float voxelSize = parameters.getFloat("voxelSize");
+    float voxelSize = parameters.getFloat("voxelSize");
+    if (voxelSize <= 0.0f && imported > 0.0f)
+        voxelSize = detectVoxelSize(mesh, imported);
     if (constrained) {
         ConstrainedFairingOptions options;
         options.voxelSize = voxelSize;
@@ -89,7 +96,8 @@ bool FilterVoxelfairPlugin::applyLanczosFairing(MeshModel &m, const RichParamete
     if (parts.empty()) {
         try {
             fairArrays(constrained, parameters, arrays.positions, arrays.polygonOffsets, arrays.polygonIndices,
-                       selectedOnly ? arrays.selected.data() : nullptr, summary);
+                       selectedOnly ? arrays.selected.data() : nullptr, importedVoxelSize(m.cm, commonPart(m.cm)),
+                       summary);
         } catch (const Error &e) {
             return fail(QString("Voxel Fairing: %1").arg(e.what()));
         }
@@ -97,7 +105,7 @@ bool FilterVoxelfairPlugin::applyLanczosFairing(MeshModel &m, const RichParamete
         for (PartArrays &part : parts) {
             try {
                 fairArrays(constrained, parameters, part.positions, part.polygonOffsets, part.polygonIndices,
-                           selectedOnly ? part.selected.data() : nullptr, summary);
+                           selectedOnly ? part.selected.data() : nullptr, importedVoxelSize(m.cm, part.part), summary);
             } catch (const Error &e) {
                 return fail(QString("Voxel Fairing: part %1: %2").arg(part.part).arg(e.what()));
             }

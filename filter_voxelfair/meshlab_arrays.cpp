@@ -216,6 +216,21 @@ std::vector<int> facePartNumbers(const CMeshO &mesh) {
     return parts;
 }
 
+int commonPart(const CMeshO &mesh) {
+    CMeshO::PerFaceAttributeHandle<int> partOf;
+    if (!findPartAttribute(mesh, partOf))
+        return -1;
+    int part = -1;
+    for (size_t f = 0; f < mesh.face.size(); ++f) {
+        if (mesh.face[f].IsD())
+            continue;
+        if (part >= 0 && partOf[f] != part)
+            return -1;
+        part = partOf[f];
+    }
+    return part;
+}
+
 std::vector<PartArrays> splitByPart(const PolygonArrays &arrays, const CMeshO &mesh) {
     CMeshO::PerFaceAttributeHandle<int> partOf;
     if (!findPartAttribute(mesh, partOf))

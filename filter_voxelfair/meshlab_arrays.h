@@ -79,4 +79,8 @@ void readTriangleArrays(const CMeshO &mesh, TriangleFields fields, TriangleArray
 // Per CMeshO face, its part number ("voxelfair_part"); empty when the mesh has no such attribute.
 std::vector<int> facePartNumbers(const CMeshO &mesh);
 
+// The part every live face of `mesh` is in (the per-face part attribute io_vxl writes), or -1
+// when the mesh has no such attribute or its faces are in several parts.
+int commonPart(const CMeshO &mesh);
+
 }  // namespace voxelfair

@@ -1,5 +1,8 @@
 #include "scene_to_meshlab.h"
 
+#include "fairing/voxel_size.h"
+#include "mesh/polygon_mesh.h"
+
 #include <vcg/complex/algorithms/update/bounding.h>
 #include <vcg/complex/allocate.h>
 
@@ -40,6 +43,29 @@ void sceneToMeshLab(const SceneSurface &surface, PaletteKind kind, MeshModel &mo
             paletteIndex[fi] = surface.quadVoxels[q].colour;
         }
     }
+    // Each part's voxel size, while every edge is still one voxel.
+    std::vector<float> voxelSizes;
+    {
+        std::vector<std::vector<uint32_t>> partQuads;
+        for (size_t q = 0; q < surface.quadCount(); ++q) {
+            const int p = surface.quadParts[q];
+            if (p < 0)
+                continue;
+            if (size_t(p) >= partQuads.size())
+                partQuads.resize(size_t(p) + 1);
+            partQuads[size_t(p)].insert(partQuads[size_t(p)].end(), &surface.quads[4 * q], &surface.quads[4 * q] + 4);
+        }
+        voxelSizes.assign(partQuads.size(), 0.0f);
+        std::vector<uint32_t> offsets;
+        for (size_t p = 0; p < partQuads.size(); ++p) {
+            offsets.resize(partQuads[p].size() / 4 + 1);
+            for (size_t q = 0; q < offsets.size(); ++q)
+                offsets[q] = uint32_t(4 * q);
+            voxelSizes[p] = detectVoxelSize(polygonMesh(surface.positions, offsets, partQuads[p]));
+        }
+    }
+    vcg::tri::Allocator<CMeshO>::GetPerMeshAttribute<std::vector<float>>(m, kPartVoxelSizeAttributeName)() =
+        std::move(voxelSizes);
     // meshlabserver does not compute the box for polygonal imports: do it here.
     vcg::tri::UpdateBounding<CMeshO>::Box(m);
 }

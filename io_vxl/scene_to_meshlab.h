@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace voxelfair {
 
@@ -22,6 +23,25 @@ constexpr const char *kPartAttributeName = "voxelfair_part";
 // into the section's palette, 16..31 being the house colours; VOX: the colour index, which is
 // also the MATL material id). The material filters bake it into maps (maps/house_mask.h).
 constexpr const char *kPaletteIndexAttributeName = "voxelfair_palette_index";
+
+// Each part's voxel size (index: the per-face part; 0 for a part without faces), a per-mesh
+// std::vector<float> attribute the importer measures on the voxel surface, where every edge is
+// one voxel. Filters that work per voxel (the fairing, the atlas' texels per voxel) pass it to
+// detectVoxelSize (fairing/voxel_size.h) rather than detecting the size afresh on a mesh they may
+// get faired, where a thin part's cross-sections shrink into a mode of their own.
+constexpr const char *kPartVoxelSizeAttributeName = "voxelfair_part_voxel_size";
+
+// The voxel size the importer measured for `part`, or 0 when the mesh has none for it.
+inline float importedVoxelSize(const CMeshO &m, int part) {
+    CMeshO &lookup = const_cast<CMeshO &>(m);  // vcglib's attribute look-up is not const
+    if (part < 0 || !vcg::tri::HasPerMeshAttribute(lookup, kPartVoxelSizeAttributeName))
+        return 0.0f;
+    auto handle =
+        vcg::tri::Allocator<CMeshO>::FindPerMeshAttribute<std::vector<float>>(lookup, kPartVoxelSizeAttributeName);
+    if (!vcg::tri::Allocator<CMeshO>::IsValidHandle(lookup, handle) || size_t(part) >= handle().size())
+        return 0.0f;
+    return handle()[size_t(part)];
+}
 
 // What the palette indices mean: a per-mesh int attribute set by the importer.
 enum class PaletteKind : int { Westwood = 1, MagicaVoxel = 2 };

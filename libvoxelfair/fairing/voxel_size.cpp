@@ -9,7 +9,7 @@
 
 namespace voxelfair {
 
-float detectVoxelSize(const PolygonMesh &mesh) {
+float detectVoxelSize(const PolygonMesh &mesh, float expected) {
     const glm::vec3 *const positions = mesh.positions;
     const size_t vertexCount = mesh.vertexCount, polygonCount = mesh.polygonCount;
     const uint32_t *const polygonOffsets = mesh.polygonOffsets, *const polygonIndices = mesh.polygonIndices;
@@ -40,6 +40,14 @@ float detectVoxelSize(const PolygonMesh &mesh) {
     }
     if (lengths.empty())
         return 0.0f;
+    if (expected > 0.0f && std::isfinite(expected)) {
+        const long bin = std::lround(std::log(double(expected)) * binsPerLog);
+        const size_t kept =
+            size_t(std::count_if(lengths.begin(), lengths.end(),
+                                 [bin](const std::pair<long, float> &l) { return std::abs(l.first - bin) <= 1; }));
+        if (20 * kept >= lengths.size())
+            return expected;
+    }
 
     std::sort(lengths.begin(), lengths.end());
     size_t bestFirst = 0, bestCount = 0;

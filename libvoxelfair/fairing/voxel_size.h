@@ -18,6 +18,15 @@ namespace voxelfair {
 // measured, k chosen for about 65536 edges, so the cost stays bounded on big meshes. Edges of
 // zero or non-finite length and indices out of range are ignored; returns 0 when no edge is left.
 // Never throws: a mesh with missing arrays gives 0.
-float detectVoxelSize(const PolygonMesh &mesh);
+//
+// `expected` > 0 is a size known from elsewhere (the importer measures each part's voxel on the
+// voxel surface, io_vxl): it is returned while at least 5% of the measured edges still have that
+// length (within the bin width). Fairing keeps the lattice spacing wherever the surface runs
+// straight along an axis (flat faces, bars), but on thin parts the cross-sections shrink into a
+// mode of their own: a faired 1-voxel bar has as many edges of 0.46 voxels as of 1, and 7 of the
+// 20 shared models faired by the paper's pass have their most common edge at 0.12-0.84 voxels.
+// A mesh rescaled since has no edge of the expected length left, and its size is detected as
+// without one.
+float detectVoxelSize(const PolygonMesh &mesh, float expected = 0.0f);
 
 }  // namespace voxelfair

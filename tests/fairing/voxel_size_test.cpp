@@ -1,17 +1,21 @@
 #include "fairing/voxel_size.h"
 
+#include "fairing/lanczos_fairing.h"
+
 #include "shapes/box_lattice.h"
 
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <random>
 
 using namespace voxelfair;
 
 namespace {
 
-float detect(const shapes::QuadMesh &m) {
-    return detectVoxelSize({m.positions.data(), m.positions.size(), m.offsets.data(), m.indices.data(), m.quadCount()});
+float detect(const shapes::QuadMesh &m, float expected = 0.0f) {
+    return detectVoxelSize({m.positions.data(), m.positions.size(), m.offsets.data(), m.indices.data(), m.quadCount()},
+                           expected);
 }
 
 }  // namespace
@@ -41,4 +45,35 @@ TEST(FairingVoxelSize, ZeroWhenNothingToMeasure) {
     const uint32_t outOfRange[] = {0, 1, 7};
     const glm::vec3 p[] = {glm::vec3(0.0f), glm::vec3(2.0f, 0.0f, 0.0f), glm::vec3(0.0f)};
     EXPECT_EQ(detectVoxelSize({p, 3, offsets, outOfRange, 1}), 2.0f);  // the one valid edge
+}
+
+// A size known from the importer is kept while the mesh still has edges of that length: on thin
+// bars (1 x 1 and 2 x 1 voxels, 10 to 60 long, any scale and offset) faired by the paper's pass,
+// whose cross-sections shrink into a mode of their own, it is the bar's voxel; on the raw bar too;
+// on the faired bar rescaled since, it is not kept, and the size is what detection finds there.
+TEST(FairingVoxelSize, AnImportedSizeHoldsWhileTheMeshKeepsItsEdges) {
+    std::mt19937_64 random(20261126);
+    std::uniform_int_distribution<int> length(10, 60), width(1, 2);
+    std::uniform_real_distribution<float> scale(0.05f, 3.0f), offset(-50.0f, 50.0f);
+    for (int i = 0; i < 12; ++i) {
+        const int n = length(random), w = width(random);
+        const float s = scale(random);
+        const glm::vec3 o(offset(random), offset(random), offset(random));
+        shapes::QuadMesh bar = shapes::boxLattice(w, 1, n);
+        for (glm::vec3 &p : bar.positions)
+            p = p * s + o;
+        SCOPED_TRACE("bar " + std::to_string(w) + " x 1 x " + std::to_string(n) + " at scale " + std::to_string(s));
+        EXPECT_NEAR(detect(bar, s), s, 1e-6f * s);
+        fairModifiedLanczos(
+            {bar.positions.data(), bar.positions.size(), bar.offsets.data(), bar.indices.data(), bar.quadCount()},
+            nullptr);
+        EXPECT_EQ(detect(bar, s), s);
+        const float alone = detect(bar);
+        if (w == 1) {  // the shrunk cross-sections (0.46 voxels) are as many as the voxel's edges
+            EXPECT_LT(alone, 0.9f * s);
+        }
+        for (glm::vec3 &p : bar.positions)
+            p *= 1.5f;
+        EXPECT_NEAR(detect(bar, s), 1.5f * alone, 1e-3f * s) << "a rescaled mesh keeps no edge of the imported length";
+    }
 }
