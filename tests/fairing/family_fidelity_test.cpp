@@ -11,7 +11,10 @@
 //   FlatAndEdges   0.10                            per family, below      rounded boxes only
 //
 // Where a goal is not met the bound is the measured worst with a margin, so the test still
-// catches a regression; the README and the closing note carry the gap. Volume: within 1%
+// catches a regression; the README and the closing note carry the gap. On cylinders
+// along an axis and boxes off the lattice the per-shape goals are out of reach of any smoother
+// of the voxels: information_limit_test.cpp shows pairs of such shapes with the same voxels
+// whose surfaces lie further apart than twice the goal. Volume: within 1%
 // of the true solid, or within 1% of what the voxels themselves hold where they are further off
 // (thin cylinders: their voxels alone miss 8%). The family's mean RMS must be below the paper's
 // pass and below VTK's, except on the families listed in kBehindPaper and kBehindVtk, where the
