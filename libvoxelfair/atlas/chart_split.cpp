@@ -181,12 +181,7 @@ size_t splitSparseCharts(const uint32_t *opposite, const ChartSplitOptions &opti
     }
     rebuilt.chartFirstFace.push_back(uint32_t(rebuilt.chartFaces.size()));
 
-    charts.chartFirstFace.swap(rebuilt.chartFirstFace);
-    charts.chartFaces.swap(rebuilt.chartFaces);
-    charts.faceChart.swap(rebuilt.faceChart);
-    charts.chartAxis.swap(rebuilt.chartAxis);
-    charts.chartSize.swap(rebuilt.chartSize);
-    charts.wedgeUv.swap(rebuilt.wedgeUv);
+    charts.swapCharts(rebuilt);
     charts.splitCharts += cut;
     return cut;
 }

@@ -90,6 +90,15 @@ struct AtlasCharts {
     bool weldedByPosition = false;  // corners were unshared: edges were matched by position
 
     size_t chartCount() const { return chartAxis.size(); }
+    // Takes the charts of `other` (faces, axes, sizes, UVs), giving it these; the counters stay.
+    void swapCharts(AtlasCharts &other) {
+        chartFirstFace.swap(other.chartFirstFace);
+        chartFaces.swap(other.chartFaces);
+        faceChart.swap(other.faceChart);
+        chartAxis.swap(other.chartAxis);
+        chartSize.swap(other.chartSize);
+        wedgeUv.swap(other.wedgeUv);
+    }
     size_t faceCount() const { return faceChart.size(); }
     bool isDegenerate(size_t chart) const {
         return chartAxis[chart].x == 0 && chartAxis[chart].y == 0 && chartAxis[chart].z == 0;

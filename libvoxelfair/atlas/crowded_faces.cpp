@@ -262,12 +262,7 @@ CrowdedFaces separateCrowdedFaces(const AtlasMesh &mesh, AtlasCharts &charts, co
         }
     rebuilt.chartFirstFace.push_back(uint32_t(rebuilt.chartFaces.size()));
 
-    charts.chartFirstFace.swap(rebuilt.chartFirstFace);
-    charts.chartFaces.swap(rebuilt.chartFaces);
-    charts.faceChart.swap(rebuilt.faceChart);
-    charts.chartAxis.swap(rebuilt.chartAxis);
-    charts.chartSize.swap(rebuilt.chartSize);
-    charts.wedgeUv.swap(rebuilt.wedgeUv);
+    charts.swapCharts(rebuilt);
     charts.separatedFaces += out.separatedFaces;
     return out;
 }

@@ -249,6 +249,16 @@ inline void testedSpan(const Inside &inside, int x0, int x1, int y, int &xl, int
     while (xr >= xl && !inside(xr, y))
         --xr;
 }
+// testedSpan on each row of `test`'s box within rowFrom..rowTo, visitSpan(y, xl, xr) where not empty.
+template <class Test, class VisitSpan>
+void testedSpans(const Test &test, int rowFrom, int rowTo, VisitSpan &&visitSpan) {
+    for (int y = std::max(test.y0, rowFrom); y <= std::min(test.y1, rowTo); ++y) {
+        int xl, xr;
+        testedSpan(test, test.x0, test.x1, y, xl, xr);
+        if (xl <= xr)
+            visitSpan(y, xl, xr);
+    }
+}
 }  // namespace raster_detail
 
 // Triangles whose conservative span is under this many columns have their rows found texel by
@@ -271,12 +281,7 @@ void rasterConservativeSpans(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double ma
     if (test.x0 > test.x1)
         return;
     if (test.x1 - test.x0 < kNarrowRows) {
-        for (int y = std::max(test.y0, rowFrom); y <= std::min(test.y1, rowTo); ++y) {
-            int xl, xr;
-            raster_detail::testedSpan(test, test.x0, test.x1, y, xl, xr);
-            if (xl <= xr)
-                visitSpan(y, xl, xr);
-        }
+        raster_detail::testedSpans(test, rowFrom, rowTo, visitSpan);
         return;
     }
     raster_detail::spans(s, test.reach, test.x0, test.x1, test.y0, test.y1, test, visitSpan, rowFrom, rowTo);
@@ -308,12 +313,7 @@ void rasterCentreSpans(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, int width, int 
     if (test.x0 > test.x1)
         return;
     if (test.x1 - test.x0 < kNarrowRows) {  // as rasterConservativeSpans
-        for (int y = std::max(test.y0, rowFrom); y <= std::min(test.y1, rowTo); ++y) {
-            int xl, xr;
-            raster_detail::testedSpan(test, test.x0, test.x1, y, xl, xr);
-            if (xl <= xr)
-                visitSpan(y, xl, xr);
-        }
+        raster_detail::testedSpans(test, rowFrom, rowTo, visitSpan);
         return;
     }
     const double reach[3] = {0, 0, 0};

@@ -127,6 +127,24 @@ void expectValidAtlas(const TestMesh &mesh, const AtlasCharts &charts, const Atl
     EXPECT_GT(m.packingEfficiency, 0.0);
 }
 
+// The faces of chart c that a flood over the chart's own edges reaches from its first face (all of
+// them when the chart is edge-connected).
+size_t facesReached(const AtlasCharts &charts, const EdgeAdjacency &adjacency, size_t c) {
+    const uint32_t seed = charts.chartFaces[charts.chartFirstFace[c]];
+    std::set<uint32_t> reached = {seed};
+    std::vector<uint32_t> stack = {seed};
+    while (!stack.empty()) {
+        const uint32_t f = stack.back();
+        stack.pop_back();
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t o = adjacency.opposite[3 * f + k];
+            if (o != kNoOpposite && charts.faceChart[o / 3] == c && reached.insert(o / 3).second)
+                stack.push_back(o / 3);
+        }
+    }
+    return reached.size();
+}
+
 }  // namespace
 
 TEST(TexelRaster, ConservativeCoverageOfAnAxisAlignedTriangle) {
@@ -362,19 +380,7 @@ TEST(Charts, SmallChartsMoveIntoTheirNeighbours) {
             const uint32_t first = charts.chartFirstFace[c], end = charts.chartFirstFace[c + 1];
             if (charts.isDegenerate(c))
                 continue;
-            // Connected: a flood over the chart's own edges from its seed reaches every face.
-            std::set<uint32_t> reached = {charts.chartFaces[first]};
-            std::vector<uint32_t> stack = {charts.chartFaces[first]};
-            while (!stack.empty()) {
-                const uint32_t f = stack.back();
-                stack.pop_back();
-                for (int k = 0; k < 3; ++k) {
-                    const uint32_t o = adjacency.opposite[3 * f + k];
-                    if (o != kNoOpposite && charts.faceChart[o / 3] == c && reached.insert(o / 3).second)
-                        stack.push_back(o / 3);
-                }
-            }
-            EXPECT_EQ(reached.size(), end - first) << "chart " << c << " is not edge-connected";
+            EXPECT_EQ(facesReached(charts, adjacency, c), end - first) << "chart " << c << " is not edge-connected";
             const uint32_t seed = charts.chartFaces[first];
             EXPECT_EQ(paper.chartAxis[paper.faceChart[seed]], charts.chartAxis[c]);
             for (uint32_t i = first; i < end; ++i) {
@@ -490,19 +496,7 @@ TEST(Charts, SparseChartsAreCutIntoCompactPieces) {
             EXPECT_LE(glm::length(hi - after.chartSize[c]), 1e-4f);
             EXPECT_TRUE(end - first == 1 || area >= 0.125 * double(hi.x - lo.x) * double(hi.y - lo.y) - 1e-6)
                 << "piece " << c << " covers " << area / (double(hi.x - lo.x) * double(hi.y - lo.y));
-            // Edge-connected.
-            std::set<uint32_t> reached = {after.chartFaces[first]};
-            std::vector<uint32_t> stack = {after.chartFaces[first]};
-            while (!stack.empty()) {
-                const uint32_t f = stack.back();
-                stack.pop_back();
-                for (int k = 0; k < 3; ++k) {
-                    const uint32_t o = adjacency.opposite[3 * f + k];
-                    if (o != kNoOpposite && after.faceChart[o / 3] == c && reached.insert(o / 3).second)
-                        stack.push_back(o / 3);
-                }
-            }
-            EXPECT_EQ(reached.size(), end - first) << "piece " << c << " is not edge-connected";
+            EXPECT_EQ(facesReached(after, adjacency, c), end - first) << "piece " << c << " is not edge-connected";
         }
         for (size_t f = 0; f < mesh.faceCount(); ++f)
             EXPECT_EQ(seen[f], 1) << "face " << f;
