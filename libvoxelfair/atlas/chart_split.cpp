@@ -2,10 +2,12 @@
 #include "atlas/chart_split.h"
 
 #include "atlas/edge_adjacency.h"
+#include "atlas/texel_raster.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include <glm/common.hpp>
@@ -28,8 +30,7 @@ Box boxOf(const AtlasCharts &charts, const std::vector<uint32_t> &entries) {
         const glm::vec2 *uv = &charts.wedgeUv[3 * size_t(i)];
         for (int k = 0; k < 3; ++k)
             b.lo = glm::min(b.lo, uv[k]), b.hi = glm::max(b.hi, uv[k]);
-        const glm::dvec2 e1 = glm::dvec2(uv[1]) - glm::dvec2(uv[0]), e2 = glm::dvec2(uv[2]) - glm::dvec2(uv[0]);
-        b.area += 0.5 * std::fabs(e1.x * e2.y - e1.y * e2.x);
+        b.area += 0.5 * std::fabs(doubleArea(uv[0], uv[1], uv[2]));
     }
     return b;
 }
@@ -115,7 +116,8 @@ size_t splitSparseCharts(const uint32_t *opposite, const ChartSplitOptions &opti
     };
 
     size_t cut = 0;
-    std::vector<std::vector<uint32_t>> stack, done;
+    std::vector<std::vector<uint32_t>> stack;
+    std::vector<std::pair<std::vector<uint32_t>, Box>> done;  // pieces in chart order, with their boxes
     for (size_t c = 0; c < chartCount; ++c) {
         const uint32_t first = charts.chartFirstFace[c], end = charts.chartFirstFace[c + 1];
         std::vector<uint32_t> all(end - first);
@@ -137,7 +139,7 @@ size_t splitSparseCharts(const uint32_t *opposite, const ChartSplitOptions &opti
             stack.pop_back();
             const Box box = boxOf(charts, piece);
             if (piece.size() < 2 || box.fill() >= double(options.minFill)) {
-                done.push_back(std::move(piece));
+                done.emplace_back(std::move(piece), box);
                 continue;
             }
             // Across the longer side, at its middle; by the centroids' median if one side is empty.
@@ -154,7 +156,7 @@ size_t splitSparseCharts(const uint32_t *opposite, const ChartSplitOptions &opti
                 std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(sorted.size() / 2), sorted.end());
                 mid = sorted[sorted.size() / 2];
                 if (std::count_if(centre.begin(), centre.end(), [&](float v) { return v < mid; }) == 0) {
-                    done.push_back(std::move(piece));  // every centroid the same: cannot be cut
+                    done.emplace_back(std::move(piece), box);  // every centroid the same: cannot be cut
                     continue;
                 }
             }
@@ -171,13 +173,10 @@ size_t splitSparseCharts(const uint32_t *opposite, const ChartSplitOptions &opti
             for (std::vector<uint32_t> &p : split)
                 stack.push_back(std::move(p));
         }
-        std::sort(done.begin(), done.end(),
-                  [](const std::vector<uint32_t> &a, const std::vector<uint32_t> &b) { return a[0] < b[0]; });
-        for (std::vector<uint32_t> &piece : done) {
-            std::sort(piece.begin(), piece.end());
-            const Box box = boxOf(charts, piece);
+        // Each piece keeps the chart's order (sides and parts keep it); pieces by their first faces.
+        std::sort(done.begin(), done.end(), [](const auto &a, const auto &b) { return a.first[0] < b.first[0]; });
+        for (const auto &[piece, box] : done)
             emit(c, piece, &box);
-        }
     }
     rebuilt.chartFirstFace.push_back(uint32_t(rebuilt.chartFaces.size()));
 

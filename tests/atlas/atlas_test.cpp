@@ -459,8 +459,7 @@ TEST(Charts, SparseChartsAreCutIntoCompactPieces) {
         double chartArea = 0;
         for (size_t i = 0; i < before.chartFaces.size(); ++i) {
             const glm::vec2 *uv = &before.wedgeUv[3 * i];
-            chartArea += 0.5 * std::fabs(double(uv[1].x - uv[0].x) * (uv[2].y - uv[0].y) -
-                                         double(uv[1].y - uv[0].y) * (uv[2].x - uv[0].x));
+            chartArea += 0.5 * std::fabs(doubleArea(uv[0], uv[1], uv[2]));
         }
         const bool isSparse = chartArea < 0.125 * double(before.chartSize[0].x) * double(before.chartSize[0].y);
         EXPECT_TRUE(isSparse || mesh.name.rfind("staircase", 0) == 0);
@@ -483,8 +482,7 @@ TEST(Charts, SparseChartsAreCutIntoCompactPieces) {
                 const glm::vec2 *uv = &after.wedgeUv[3 * size_t(i)];
                 for (int k = 0; k < 3; ++k)
                     lo = glm::min(lo, uv[k]), hi = glm::max(hi, uv[k]);
-                area += 0.5 * std::fabs(double(uv[1].x - uv[0].x) * (uv[2].y - uv[0].y) -
-                                        double(uv[1].y - uv[0].y) * (uv[2].x - uv[0].x));
+                area += 0.5 * std::fabs(doubleArea(uv[0], uv[1], uv[2]));
                 // The uncut chart's UVs, shifted alike for the whole piece.
                 const uint32_t j = entryBefore[f];
                 const glm::vec2 shift =
