@@ -314,27 +314,22 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
             rowFrom, rowTo);
     };
     auto paintOverlapped = [&](size_t f, const glm::dvec2 *q, int rowFrom, int rowTo) {
-        // The conservative raster's box (raster_detail::ConservativeTest), within the rows asked.
-        const double minX = std::min({q[0].x, q[1].x, q[2].x}), maxX = std::max({q[0].x, q[1].x, q[2].x});
-        const double minY = std::min({q[0].y, q[1].y, q[2].y}), maxY = std::max({q[0].y, q[1].y, q[2].y});
-        constexpr double kSafe = 1 << 30;  // ceilToInt and floorToInt hold
-        if (minX > -kSafe && maxX < kSafe && minY > -kSafe && maxY < kSafe) {
-            const int x0 = std::clamp(ceilToInt(minX - 1 - kBakeMargin), 0, width);
-            const int x1 = std::clamp(floorToInt(maxX + kBakeMargin), -1, width - 1);
-            const int y0 = std::max(rowFrom, std::clamp(ceilToInt(minY - 1 - kBakeMargin), 0, height));
-            const int y1 = std::min(rowTo, std::clamp(floorToInt(maxY + kBakeMargin), -1, height - 1));
-            if (x0 > x1)
-                return;
-            int first = y1 + 1, last = y0 - 1;  // the rows of the box with an empty texel
-            for (int y = y0; y <= y1; ++y)
-                if (anyEmpty(filled + canvas.index(x0, y), size_t(x1) - size_t(x0) + 1)) {
-                    first = std::min(first, y);
-                    last = y;
-                }
-            if (first > last)
-                return;
-            rowFrom = first, rowTo = last;
-        }
+        // The conservative raster's box (raster_detail::conservativeBox), within the rows asked.
+        const raster_detail::TexelBox box = raster_detail::conservativeBox(
+            std::min({q[0].x, q[1].x, q[2].x}), std::max({q[0].x, q[1].x, q[2].x}), std::min({q[0].y, q[1].y, q[2].y}),
+            std::max({q[0].y, q[1].y, q[2].y}), kBakeMargin, width, height);
+        if (box.x0 > box.x1)
+            return;
+        const int y0 = std::max(rowFrom, box.y0), y1 = std::min(rowTo, box.y1);
+        int first = y1 + 1, last = y0 - 1;  // the rows of the box with an empty texel
+        for (int y = y0; y <= y1; ++y)
+            if (anyEmpty(filled + canvas.index(box.x0, y), size_t(box.x1) - size_t(box.x0) + 1)) {
+                first = std::min(first, y);
+                last = y;
+            }
+        if (first > last)
+            return;
+        rowFrom = first, rowTo = last;
         const std::array<uint8_t, 4> texel = texelOf(f);
         rasterConservativeSpans(
             q[0], q[1], q[2], kBakeMargin, width, height,

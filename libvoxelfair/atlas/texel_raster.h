@@ -193,6 +193,23 @@ void spans(const Setup &s, const double reach[3], int x0, int x1, int y0, int y1
     }
 }
 
+// The texels x0..x1, y0..y1 within [0, width) x [0, height) whose square, grown by `margin`, can
+// meet a triangle with this bounding box: the conservative test's range (empty: x0 > x1 or
+// y0 > y1). Exact integer floors and ceilings where the box is within 2^30 of the origin.
+struct TexelBox {
+    int x0, x1, y0, y1;
+};
+inline TexelBox conservativeBox(double minX, double maxX, double minY, double maxY, double margin, int width,
+                                int height) {
+    constexpr double kSafe = 1 << 30;
+    if (minX > -kSafe && maxX < kSafe && minY > -kSafe && maxY < kSafe)
+        return {
+            std::clamp(ceilToInt(minX - 1 - margin), 0, width), std::clamp(floorToInt(maxX + margin), -1, width - 1),
+            std::clamp(ceilToInt(minY - 1 - margin), 0, height), std::clamp(floorToInt(maxY + margin), -1, height - 1)};
+    return {clampToInt(std::ceil(minX - 1 - margin), 0, width), clampToInt(std::floor(maxX + margin), -1, width - 1),
+            clampToInt(std::ceil(minY - 1 - margin), 0, height), clampToInt(std::floor(maxY + margin), -1, height - 1)};
+}
+
 // The conservative test (texel square grown by `margin` meets the triangle, by three
 // half-planes) and the centre test (top-left rule) of one triangle, with their texel ranges.
 struct ConservativeTest {
@@ -200,10 +217,8 @@ struct ConservativeTest {
     double reach[3];
     int x0, x1, y0, y1;
     ConservativeTest(const Setup &setup, double margin, int width, int height) : s(setup) {
-        x0 = clampToInt(std::ceil(s.minX - 1 - margin), 0, width);
-        x1 = clampToInt(std::floor(s.maxX + margin), -1, width - 1);
-        y0 = clampToInt(std::ceil(s.minY - 1 - margin), 0, height);
-        y1 = clampToInt(std::floor(s.maxY + margin), -1, height - 1);
+        const TexelBox box = conservativeBox(s.minX, s.maxX, s.minY, s.maxY, margin, width, height);
+        x0 = box.x0, x1 = box.x1, y0 = box.y0, y1 = box.y1;
         const double h = 0.5 + margin;
         for (int i = 0; i < 3; ++i)
             reach[i] = s.e[i].reach(h);
