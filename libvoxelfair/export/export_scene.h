@@ -1,7 +1,7 @@
 // What an exporter needs to know about a model's parts beyond its triangles: the node tree
 // (a unit's body, turret and barrel; their sections; a VOX scene's shape instances), where each
 // node's pivot sits, its animation, and which way the model faces. The importer builds it
-// (export/unit_scene.h, export/vox_export_scene.h) and each face of the mesh keeps the index of
+// (scene/unit_scene.h, scene/vox_export_nodes.h) and each face of the mesh keeps the index of
 // its node (the per-face part), so the exporter can give every node its own faces.
 //
 // All transforms are in the importer's model space: right-handed, z up, one unit per voxel.

@@ -1,3 +1,5 @@
+// The VXL reader (readVxl, formats/vxl.h): header, section headers and tailers, then each
+// section's span columns into a VoxelVolume, every offset and count checked against the file.
 #include "formats/vxl.h"
 
 #include "formats/byte_reader.h"

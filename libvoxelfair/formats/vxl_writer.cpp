@@ -1,3 +1,5 @@
+// The VXL writer (writeVxl, formats/vxl.h): sections in the editor's contiguous layout, for the
+// tests' fixtures and the bundled example.
 #include "formats/vxl.h"
 
 #include "formats/byte_writer.h"

@@ -1,3 +1,4 @@
+// A scene's parts meshed as one surface in model space (extractSceneSurface, scene/voxel_scene.h).
 #include "scene/voxel_scene.h"
 
 #include <glm/mat3x3.hpp>
