@@ -55,21 +55,6 @@ struct Canvas {
     }
 };
 
-// Whether any of the n bytes at p (0 or 1: Canvas::filled while painting) is 0.
-bool anyEmpty(const uint8_t *p, size_t n) {
-    size_t i = 0;
-    for (; i + 8 <= n; i += 8) {
-        uint64_t v;
-        std::memcpy(&v, p + i, 8);
-        if (v != 0x0101010101010101u)
-            return true;
-    }
-    for (; i < n; ++i)
-        if (p[i] == 0)
-            return true;
-    return false;
-}
-
 BakeSource chooseSource(const AtlasMesh &mesh, BakeSource wanted, std::string &note) {
     const bool face = mesh.faceColours != nullptr, vertex = mesh.vertexColours != nullptr;
     if ((wanted == BakeSource::FaceColours && face) || (wanted == BakeSource::VertexColours && vertex) ||
@@ -323,7 +308,7 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
         const int y0 = std::max(rowFrom, box.y0), y1 = std::min(rowTo, box.y1);
         int first = y1 + 1, last = y0 - 1;  // the rows of the box with an empty texel
         for (int y = y0; y <= y1; ++y)
-            if (anyEmpty(filled + canvas.index(box.x0, y), size_t(box.x1) - size_t(box.x0) + 1)) {
+            if (!allOnes(filled + canvas.index(box.x0, y), size_t(box.x1) - size_t(box.x0) + 1)) {
                 first = std::min(first, y);
                 last = y;
             }

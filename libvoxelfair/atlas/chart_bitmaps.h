@@ -6,8 +6,8 @@
 // xatlas's bitmap packer, kept to the charts large enough to gain from it.
 //
 // A bitmap is the chart's block mask (rasterizeChartMasks on blocks: its conservative texels
-// grown by the padding, coarsened to blocks) set block by block from the mask's spans. Its row
-// extents are the mask's profiles.
+// grown by the padding, coarsened to blocks), taken over from the masks. Its row extents are
+// the mask's profiles.
 #pragma once
 
 #include "atlas/chart_masks.h"
@@ -25,17 +25,15 @@ struct ChartBitmaps {
     static constexpr size_t kNone = SIZE_MAX;
     std::vector<size_t> first;
     std::vector<uint8_t> bits;
-    // Per chart: the blocks its bitmap sets (0 without one), counted when it is built.
+    // Per chart: the blocks its bitmap sets (0 without one).
     std::vector<size_t> setBlocks;
     bool has(size_t chart) const { return chart < first.size() && first[chart] != kNone; }
     const uint8_t *of(size_t chart) const { return bits.data() + first[chart]; }
 };
 
-// Builds bitmaps of the charts whose block mask covers at least `leastBlocks` blocks, from the
-// block masks (rasterised on blocks with keepSpans), and lowers coarse.totalRowTexels to the
-// blocks the bitmaps' row spans hold.
-// On up to `threads` threads (0: one per hardware thread); the same bitmaps for any count.
-void rasterizeChartBitmaps(const AtlasCharts &charts, ChartMasks &coarse, int64_t leastBlocks, ChartBitmaps &out,
-                           int threads = 0);
+// Takes the bitmaps of the charts whose block mask covers at least `leastBlocks` blocks from
+// the block masks (rasterised on blocks; their bitmaps move here), and lowers
+// coarse.totalRowTexels to the blocks the bitmaps' row spans hold.
+void takeChartBitmaps(const AtlasCharts &charts, ChartMasks &coarse, int64_t leastBlocks, ChartBitmaps &out);
 
 }  // namespace voxelfair

@@ -2,6 +2,7 @@
 
 #include "atlas/texel_raster.h"
 #include "base/parallel_bands.h"
+#include "base/short_fill.h"
 
 #include <algorithm>
 #include <cmath>
@@ -31,32 +32,22 @@ void windowMin(const std::vector<int> &v, int from, int count, int r, int *out) 
     }
 }
 
-// Charts rasterised by one band (rasterizeChartMasks): their profiles and spans, each chart's
-// spans ending at spanEnd.
+// Charts rasterised by one band (rasterizeChartMasks): their profiles and, on blocks, their
+// bitmaps (bitsFirst counted from the band's own start).
 struct MaskPart {
-    std::vector<int16_t> profiles, spans;
-    std::vector<size_t> spanEnd;
+    std::vector<int16_t> profiles;
+    std::vector<uint8_t> bits;
+    std::vector<size_t> bitsFirst, setBlocks;
     size_t totalRowTexels = 0;
 };
 
 // Fewer faces than this are rasterised on one thread: starting threads would cost more.
 constexpr size_t kLeastParallelFaces = 4096;
 
-// Records a chart's conservative span (y, xl..xr): kept in the band's span list when asked,
-// and folded into the mask's row and column extents.
+// Folds a chart's conservative span (y, xl..xr) into the mask's row and column extents.
 struct SpanRecorder {
-    bool keepSpans;
-    MaskPart &part;
-    size_t &spanCount;
     std::vector<int> &rowLeft, &rowRight, &colBottom, &colTop;
     void operator()(int y, int xl, int xr) const {
-        if (keepSpans) {
-            if (spanCount + 3 > part.spans.size())
-                part.spans.resize(2 * part.spans.size() + 3);
-            int16_t *at = part.spans.data() + spanCount;
-            at[0] = int16_t(y), at[1] = int16_t(xl), at[2] = int16_t(xr);
-            spanCount += 3;
-        }
         rowLeft[size_t(y)] = std::min(rowLeft[size_t(y)], xl);
         rowRight[size_t(y)] = std::max(rowRight[size_t(y)], xr);
         int *bottom = colBottom.data(), *top = colTop.data();
@@ -67,6 +58,18 @@ struct SpanRecorder {
     }
 };
 
+// The rows of `box` in `bits` (rows of `width`) with a block not set: from `first` to `last`
+// (none: first > last).
+void unsetRows(const uint8_t *bits, int width, const raster_detail::TexelBox &box, int &first, int &last) {
+    const size_t length = size_t(box.x1) - size_t(box.x0) + 1;
+    first = box.y0;
+    while (first <= box.y1 && allOnes(bits + size_t(first) * size_t(width) + size_t(box.x0), length))
+        ++first;
+    last = box.y1;
+    while (last > first && allOnes(bits + size_t(last) * size_t(width) + size_t(box.x0), length))
+        --last;
+}
+
 // Chart c straight onto 2 x 2 blocks: the coarse mask that rasterising its texels (on the w x h
 // canvas, at `origin`), growing them by `padding` and coarsening would give. The texel mask's
 // box is the footprint's, known from the triangles' extents (each triangle's first and last
@@ -75,11 +78,14 @@ struct SpanRecorder {
 // triangle meets the block grown by padding + kMaskMargin texels: a conservative test on the
 // block grid with that margin in blocks. Its three half-plane tests may keep a block near a
 // sharp corner that the texel mask leaves out (a superset: still never overlapped by the bake).
+//
+// The blocks are set in a bitmap (appended to part.bits), the union of the triangles' spans.
+// A triangle's spans lie in its conservative box (raster_detail::conservativeBox); the rows of
+// the box whose blocks are all set already would add nothing, so only the rows from the first
+// to the last row with an unset block are rasterised (the same spans there: rowFrom, rowTo),
+// none when every row is set. The extents are then read off the bitmap.
 bool rasterizeBlocks(const AtlasCharts &charts, size_t c, double origin, int w, int h, int padding, int maxSide,
-                     ChartMask &m, const SpanRecorder &record) {
-    std::vector<int> &rowLeft = record.rowLeft, &rowRight = record.rowRight, &colBottom = record.colBottom,
-                     &colTop = record.colTop;
-    MaskPart &part = record.part;
+                     ChartMask &m, MaskPart &part) {
     double lx = INFINITY, hx = -INFINITY, ly = INFINITY, hy = -INFINITY;
     for (size_t i = charts.chartFirstFace[c]; i < charts.chartFirstFace[c + 1]; ++i) {
         const glm::vec2 *uv = &charts.wedgeUv[3 * i];
@@ -105,51 +111,84 @@ bool rasterizeBlocks(const AtlasCharts &charts, size_t c, double origin, int w, 
     m.offset = glm::dvec2(origin - x0, origin - y0);
     m.width = (texelWidth + 1) / 2;
     m.height = (texelHeight + 1) / 2;
-    rowLeft.assign(size_t(m.height), kNone);
-    rowRight.assign(size_t(m.height), -kNone);
-    colBottom.assign(size_t(m.width), kNone);
-    colTop.assign(size_t(m.width), -kNone);
+    const int width = m.width, height = m.height;
+    const size_t first = part.bits.size();
+    part.bits.resize(first + size_t(width) * size_t(height), 0);
+    uint8_t *bits = part.bits.data() + first;
     const double margin = (padding + kMaskMargin) / 2;
     bool any = false;
     for (size_t i = charts.chartFirstFace[c]; i < charts.chartFirstFace[c + 1]; ++i) {
         const glm::vec2 *uv = &charts.wedgeUv[3 * i];
+        const glm::dvec2 a = (glm::dvec2(uv[0]) * m.scale + m.offset) * 0.5,
+                         b = (glm::dvec2(uv[1]) * m.scale + m.offset) * 0.5,
+                         d = (glm::dvec2(uv[2]) * m.scale + m.offset) * 0.5;
+        const raster_detail::TexelBox box =
+            raster_detail::conservativeBox(std::min({a.x, b.x, d.x}), std::max({a.x, b.x, d.x}),
+                                           std::min({a.y, b.y, d.y}), std::max({a.y, b.y, d.y}), margin, width, height);
+        if (box.x0 > box.x1 || box.y0 > box.y1)
+            continue;
+        int first = box.y0, last = box.y1;
+        if (any)
+            unsetRows(bits, width, box, first, last);
+        if (first > last)
+            continue;
         rasterConservativeSpans(
-            (glm::dvec2(uv[0]) * m.scale + m.offset) * 0.5, (glm::dvec2(uv[1]) * m.scale + m.offset) * 0.5,
-            (glm::dvec2(uv[2]) * m.scale + m.offset) * 0.5, margin, m.width, m.height, [&](int y, int xl, int xr) {
+            a, b, d, margin, width, height,
+            [&](int y, int xl, int xr) {
                 any = true;
-                record(y, xl, xr);
-            });
+                fillBytes(bits + size_t(y) * size_t(width) + size_t(xl), 1, size_t(xr) - size_t(xl) + 1);
+            },
+            first, last);
     }
-    if (!any) {  // the one texel and its padding: the whole mask
-        std::fill(rowLeft.begin(), rowLeft.end(), 0);
-        std::fill(rowRight.begin(), rowRight.end(), m.width - 1);
-        std::fill(colBottom.begin(), colBottom.end(), 0);
-        std::fill(colTop.begin(), colTop.end(), m.height - 1);
-    }
-    if (record.keepSpans)
-        part.spanEnd.push_back(record.spanCount);
     m.profile = part.profiles.size();
-    part.profiles.resize(m.profile + 2 * size_t(m.width) + 2 * size_t(m.height));
-    int16_t *bottom = part.profiles.data() + m.profile, *top = bottom + m.width;
-    int16_t *left = top + m.width, *right = left + m.height;
-    for (int y = 0; y < m.height; ++y) {
-        const bool set = rowLeft[size_t(y)] != kNone;
-        left[y] = int16_t(set ? rowLeft[size_t(y)] : m.width);
-        right[y] = int16_t(set ? rowRight[size_t(y)] : -1);
-        part.totalRowTexels += set ? size_t(right[y] - left[y] + 1) : 0;
+    part.profiles.resize(m.profile + 2 * size_t(width) + 2 * size_t(height));
+    int16_t *bottom = part.profiles.data() + m.profile, *top = bottom + width;
+    int16_t *left = top + width, *right = left + height;
+    if (!any) {  // the one texel and its padding: the whole mask, without a bitmap
+        part.bits.resize(first);
+        part.bitsFirst.push_back(ChartMasks::kNoBits);
+        part.setBlocks.push_back(0);
+        std::fill(left, left + height, int16_t(0));
+        std::fill(right, right + height, int16_t(width - 1));
+        std::fill(bottom, bottom + width, int16_t(0));
+        std::fill(top, top + width, int16_t(height - 1));
+        part.totalRowTexels += size_t(width) * size_t(height);
+        return true;
     }
-    for (int x = 0; x < m.width; ++x) {
-        const bool set = colBottom[size_t(x)] != kNone;
-        bottom[x] = int16_t(set ? colBottom[size_t(x)] : m.height);
-        top[x] = int16_t(set ? colTop[size_t(x)] : -1);
+    // Each row's first and last set block; each column's lowest and highest (the highest row
+    // seen so far going up, the lowest the first), over the rows' extents only.
+    std::fill(bottom, bottom + width, int16_t(height));
+    std::fill(top, top + width, int16_t(-1));
+    size_t set = 0;
+    for (int y = 0; y < height; ++y) {
+        const uint8_t *row = bits + size_t(y) * size_t(width);
+        int l = 0, r = width - 1;
+        while (l < width && !row[l])
+            ++l;
+        while (r >= l && !row[r])
+            --r;
+        left[y] = int16_t(l < width ? l : width);
+        right[y] = int16_t(l < width ? r : -1);
+        if (l > r)
+            continue;
+        part.totalRowTexels += size_t(r - l + 1);
+        const int16_t row16 = int16_t(y);
+        for (int x = l; x <= r; ++x) {
+            const bool on = row[x] != 0;
+            set += on;
+            top[x] = on ? row16 : top[x];
+            bottom[x] = on && bottom[x] == height ? row16 : bottom[x];
+        }
     }
+    part.bitsFirst.push_back(first);
+    part.setBlocks.push_back(set);
     return true;
 }
 
-// Charts [first, end) into `part` (profiles and spans counted from its own start) and
+// Charts [first, end) into `part` (profiles and bitmaps counted from its own start) and
 // masks[first, end): false as soon as one is too large.
 bool rasterizeRange(const AtlasCharts &charts, size_t first, size_t end, double texelsPerUnit, int padding, int maxSide,
-                    bool keepSpans, bool onBlocks, ChartMask *masks, MaskPart &part) {
+                    bool onBlocks, ChartMask *masks, MaskPart &part) {
     // The footprint's extent per row (leftmost, rightmost column) and per column (lowest,
     // highest row) in the chart's canvas; kNone where nothing is set. Only these extents reach
     // the packers, so the footprint itself is never stored: the square dilation by `padding`
@@ -159,22 +198,7 @@ bool rasterizeRange(const AtlasCharts &charts, size_t first, size_t end, double 
     // A chart's box starts at its UV origin: placed on a texel boundary, the generous margin would
     // reach the texel row and column before it. Just past the margin it starts in its first texel.
     const double origin = border + 2 * kMaskMargin;
-    size_t spanCount = 0;  // spans are written into room made beforehand, then trimmed
-    if (keepSpans) {       // room for every triangle's rows at once: growing the spans costs more than the rows
-        double rows = 0;
-        for (size_t c = first; c < end; ++c) {
-            const double scale = charts.isDegenerate(c) ? 1.0 : texelsPerUnit;
-            for (size_t i = charts.chartFirstFace[c]; i < charts.chartFirstFace[c + 1]; ++i) {
-                const glm::vec2 *uv = &charts.wedgeUv[3 * i];
-                rows += (std::max({uv[0].y, uv[1].y, uv[2].y}) - std::min({uv[0].y, uv[1].y, uv[2].y})) * scale *
-                            (onBlocks ? 0.5 : 1.0) +
-                        3;
-            }
-        }
-        if (rows < 1e9)
-            part.spans.resize(3 * size_t(rows));
-    }
-    const SpanRecorder record{keepSpans, part, spanCount, rowLeft, rowRight, colBottom, colTop};
+    const SpanRecorder record{rowLeft, rowRight, colBottom, colTop};
     for (size_t c = first; c < end; ++c) {
         ChartMask &m = masks[c];
         m.scale = charts.isDegenerate(c) ? 1.0 : texelsPerUnit;
@@ -183,7 +207,7 @@ bool rasterizeRange(const AtlasCharts &charts, size_t first, size_t end, double 
             return false;
         const int w = int(std::ceil(size.x)) + 2 * border + 1, h = int(std::ceil(size.y)) + 2 * border + 1;
         if (onBlocks) {
-            if (!rasterizeBlocks(charts, c, origin, w, h, padding, maxSide, m, record))
+            if (!rasterizeBlocks(charts, c, origin, w, h, padding, maxSide, m, part))
                 return false;
             continue;
         }
@@ -215,14 +239,6 @@ bool rasterizeRange(const AtlasCharts &charts, size_t first, size_t end, double 
         if (m.width > maxSide || m.height > maxSide)
             return false;
         m.offset = glm::dvec2(origin - x0, origin - y0);
-        if (keepSpans) {  // canvas -> mask texels
-            for (size_t k = part.spanEnd.empty() ? 0 : part.spanEnd.back(); k < spanCount; k += 3) {
-                part.spans[k] = int16_t(part.spans[k] - y0);
-                part.spans[k + 1] = int16_t(part.spans[k + 1] - x0);
-                part.spans[k + 2] = int16_t(part.spans[k + 2] - x0);
-            }
-            part.spanEnd.push_back(spanCount);
-        }
 
         m.profile = part.profiles.size();
         part.profiles.resize(m.profile + 2 * size_t(m.width) + 2 * size_t(m.height));
@@ -251,16 +267,16 @@ bool rasterizeRange(const AtlasCharts &charts, size_t first, size_t end, double 
         part.totalRowTexels += size_t(extents(rowLeft, rowRight, y0, m.height, x0, m.width, left, right));
         extents(colBottom, colTop, x0, m.width, y0, m.height, bottom, top);
     }
-    part.spans.resize(spanCount);
     return true;
 }
 
 }  // namespace
 
 bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int padding, int maxSide, ChartMasks &masks,
-                         bool keepSpans, int threads, bool onBlocks) {
-    masks.spans.clear();
-    masks.spanFirst.assign(keepSpans ? 1 : 0, 0);
+                         int threads, bool onBlocks) {
+    masks.bits.clear();
+    masks.bitsFirst.clear();
+    masks.setBlocks.clear();
     masks.charts.assign(charts.chartCount(), ChartMask{});
     masks.profiles.clear();
     masks.texelsPerUnit = texelsPerUnit;
@@ -282,25 +298,26 @@ bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int pa
     std::vector<MaskPart> parts(bands);
     std::vector<uint8_t> fits(bands, 0);
     runBands(bands, workers, [&](size_t b) {
-        fits[b] = rasterizeRange(charts, from[b], from[b + 1], texelsPerUnit, padding, maxSide, keepSpans, onBlocks,
+        fits[b] = rasterizeRange(charts, from[b], from[b + 1], texelsPerUnit, padding, maxSide, onBlocks,
                                  masks.charts.data(), parts[b]);
     });
     for (size_t b = 0; b < bands; ++b) {
         if (!fits[b])
             return false;
         MaskPart &part = parts[b];
-        const size_t profileBase = masks.profiles.size(), spanBase = masks.spans.size();
+        const size_t profileBase = masks.profiles.size(), bitsBase = masks.bits.size();
         for (size_t c = from[b]; c < from[b + 1]; ++c)
             masks.charts[c].profile += profileBase;
-        for (size_t e : part.spanEnd)
-            masks.spanFirst.push_back(spanBase + e);
+        for (size_t f : part.bitsFirst)
+            masks.bitsFirst.push_back(f == ChartMasks::kNoBits ? f : bitsBase + f);
+        masks.setBlocks.insert(masks.setBlocks.end(), part.setBlocks.begin(), part.setBlocks.end());
         masks.totalRowTexels += part.totalRowTexels;
         if (bands == 1) {
             masks.profiles.swap(part.profiles);
-            masks.spans.swap(part.spans);
+            masks.bits.swap(part.bits);
         } else {
             masks.profiles.insert(masks.profiles.end(), part.profiles.begin(), part.profiles.end());
-            masks.spans.insert(masks.spans.end(), part.spans.begin(), part.spans.end());
+            masks.bits.insert(masks.bits.end(), part.bits.begin(), part.bits.end());
         }
     }
     return true;

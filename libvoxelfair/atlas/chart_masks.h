@@ -3,10 +3,11 @@
 // (a square, Chebyshev, dilation). Two masks placed without overlap therefore keep their
 // charts at least 2 * padding empty texels apart: the gutter.
 //
-// The packers only read a mask's extent on each row and column, so only those are kept: the
+// The packers read a mask's extent on each row and column. On texels only those are kept: the
 // triangles' row spans give the footprint's extents, and the dilation of a set by a square is,
 // per row (column), the extents of the 2 * padding + 1 rows (columns) around it widened by
-// padding. No per-texel image is built.
+// padding; no per-texel image is built. On 2 x 2 blocks (below) the mask is a bitmap, which the
+// tight packer also reads for the holes inside the larger charts' rows (chart_bitmaps.h).
 #pragma once
 
 #include "atlas/charts.h"
@@ -42,11 +43,13 @@ struct ChartMasks {
     // Texels between the leftmost and rightmost set texel of every row of every mask: no
     // packing of the masks takes less room (the tight packer takes these spans or more).
     size_t totalRowTexels = 0;
-    // With keepSpans: every chart's conservative texel spans (row, first, last), in mask texels
-    // (on blocks: its blocks' spans, padding included), chart c's from spanFirst[c] to
-    // spanFirst[c + 1] (chart_bitmaps.h reads them).
-    std::vector<int16_t> spans;
-    std::vector<size_t> spanFirst;
+    // On blocks: every chart's block mask as a bitmap, width x height bytes (1: set), rows from
+    // the bottom, chart c's from bits[bitsFirst[c]], and setBlocks[c] the blocks it sets. A
+    // chart none of whose triangles has area is taken whole (its one texel and padding) and
+    // has no bitmap: kNoBits, 0 blocks. Empty off blocks.
+    static constexpr size_t kNoBits = SIZE_MAX;
+    std::vector<uint8_t> bits;
+    std::vector<size_t> bitsFirst, setBlocks;
 };
 
 // Where a packer put a chart: the mask's lower-left corner in the texture, after turning it by
@@ -62,10 +65,10 @@ struct ChartPlacement {
 // onBlocks: the masks on a grid of 2 x 2 texel blocks (PackOptions::mipBlocks), rasterised there
 // directly: a block is set when any texel of the texel mask is (or, rarely, near a sharp corner,
 // one more), so masks placed without overlap at even texels share no block. Sizes, profiles,
-// spans and totalRowTexels are then in blocks; scale and offset still map chart points to the
+// bitmaps and totalRowTexels are then in blocks; scale and offset still map chart points to the
 // texel mask's texels, whose size is twice the block mask's (rounded up to even).
 bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int padding, int maxSide, ChartMasks &masks,
-                         bool keepSpans = false, int threads = 0, bool onBlocks = false);
+                         int threads = 0, bool onBlocks = false);
 
 // The mask-local texel position of chart point `p` (scaled and offset already) after `quarterTurns`
 // counter-clockwise turns of the width x height mask; integer texels map to integer texels.

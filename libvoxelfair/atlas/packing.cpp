@@ -33,10 +33,10 @@ struct Packing {
 
 bool rasterize(const AtlasCharts &charts, double density, int padding, int maxSide, int threads, Packing &out) {
     if (out.block == 1)
-        return rasterizeChartMasks(charts, density, padding, maxSide, out.masks, false, threads);
-    if (!rasterizeChartMasks(charts, density, padding, maxSide, out.blocks, true, threads, true))
+        return rasterizeChartMasks(charts, density, padding, maxSide, out.masks, threads);
+    if (!rasterizeChartMasks(charts, density, padding, maxSide, out.blocks, threads, true))
         return false;
-    rasterizeChartBitmaps(charts, out.blocks, kLeastBitmapBlocks, out.bitmaps, threads);
+    takeChartBitmaps(charts, out.blocks, kLeastBitmapBlocks, out.bitmaps);
     return true;
 }
 

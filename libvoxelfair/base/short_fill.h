@@ -2,7 +2,8 @@
 // bytes long, where a call into libc's memset costs more than the stores (on the 2048^2
 // tank atlas, 0.6 million spans per bake and about 1 million per chart bitmap pass). Short
 // runs take two overlapping stores of 1, 2, 4 or 8 bytes, the technique of libc memsets'
-// own small-size paths; longer ones still go to memset.
+// own small-size paths; longer ones still go to memset. And the test whether such a run is
+// whole (every byte 1), eight bytes at a time.
 #pragma once
 
 #include <cstddef>
@@ -31,6 +32,35 @@ inline void fillBytes(uint8_t *p, uint8_t value, size_t n) {
     } else if (n == 1) {
         *p = value;
     }
+}
+
+// Whether all n bytes at p are 1 (bytes holding 0 or 1: painted or set flags). Short runs
+// take two overlapping loads, as fillBytes.
+inline bool allOnes(const uint8_t *p, size_t n) {
+    if (n >= 8) {
+        for (size_t i = 0; i + 8 < n; i += 8) {
+            uint64_t v;
+            std::memcpy(&v, p + i, 8);
+            if (v != 0x0101010101010101u)
+                return false;
+        }
+        uint64_t v;
+        std::memcpy(&v, p + n - 8, 8);
+        return v == 0x0101010101010101u;
+    }
+    if (n >= 4) {
+        uint32_t a, b;
+        std::memcpy(&a, p, 4);
+        std::memcpy(&b, p + n - 4, 4);
+        return a == 0x01010101u && b == 0x01010101u;
+    }
+    if (n >= 2) {
+        uint16_t a, b;
+        std::memcpy(&a, p, 2);
+        std::memcpy(&b, p + n - 2, 2);
+        return a == 0x0101u && b == 0x0101u;
+    }
+    return n == 0 || p[0] == 1;
 }
 
 }  // namespace voxelfair
