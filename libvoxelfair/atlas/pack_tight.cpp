@@ -7,6 +7,7 @@
 #include <condition_variable>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <mutex>
 #include <numeric>
@@ -29,6 +30,31 @@ struct Shape {
     std::vector<int16_t> left, right;
     std::vector<Span> spans;
 };
+
+// The first c in [from, right] where the bitmap byte row[c * stride] (0 or 1) is set (`set`) or
+// not, right + 1 if none. Along a stored row (stride 1 or -1) eight bytes at a time.
+int nextByte(const uint8_t *row, ptrdiff_t stride, int from, int right, bool set) {
+    const uint64_t flip = set ? 0 : 0x0101010101010101u;  // set bytes of the word: the ones sought
+    int c = from;
+    if (stride == 1) {
+        for (; c + 8 <= right + 1; c += 8) {
+            uint64_t v;
+            std::memcpy(&v, row + c, 8);
+            if ((v ^= flip) != 0)
+                return c + __builtin_ctzll(v) / 8;
+        }
+    } else if (stride == -1) {  // c runs down through memory: the word ending at row - c
+        for (; c + 8 <= right + 1; c += 8) {
+            uint64_t v;
+            std::memcpy(&v, row - c - 7, 8);
+            if ((v ^= flip) != 0)
+                return c + (__builtin_clzll(v) - 7) / 8;
+        }
+    }
+    while (c <= right && (row[c * stride] != 0) != set)
+        ++c;
+    return c;
+}
 
 // The shape of mask `m` turned by `turns` quarter turns counter-clockwise (turnInMask), or its
 // bounding box.
@@ -80,13 +106,11 @@ void turnedShape(const ChartMask &m, const std::vector<int16_t> &profiles, int t
             const uint8_t *row = bits + origin(r);
             const int right = s.right[size_t(r)];
             for (int c = s.left[size_t(r)]; c <= right;) {
-                if (!row[c * stride]) {
-                    ++c;
-                    continue;
-                }
+                c = nextByte(row, stride, c, right, true);
+                if (c > right)
+                    break;
                 const int start = c;
-                while (c <= right && row[c * stride])
-                    ++c;
+                c = nextByte(row, stride, c, right, false);
                 s.spans.push_back({int16_t(r), int16_t(start), int16_t(c - start)});
             }
         }
