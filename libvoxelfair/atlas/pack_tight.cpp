@@ -29,6 +29,9 @@ struct Shape {
     int width = 0, height = 0;
     std::vector<int16_t> left, right;
     std::vector<Span> spans;
+    // Per row, its longest span (0: none); and the rows with a span, longest first (as the spans).
+    std::vector<int16_t> need;
+    std::vector<int16_t> needRows;
 };
 
 // The first c in [from, right] where the bitmap byte row[c * stride] (0 or 1) is set (`set`) or
@@ -118,6 +121,13 @@ void turnedShape(const ChartMask &m, const std::vector<int16_t> &profiles, int t
     // The longest span admits the fewest places, so it is tested first and the others mostly
     // confirm it.
     std::stable_sort(s.spans.begin(), s.spans.end(), [](const Span &a, const Span &b) { return a.length > b.length; });
+    s.need.assign(size_t(s.height), 0);
+    s.needRows.clear();
+    for (const Span &sp : s.spans)
+        if (s.need[size_t(sp.row)] == 0) {
+            s.need[size_t(sp.row)] = sp.length;
+            s.needRows.push_back(sp.row);
+        }
 }
 
 // The free texels of a width x height atlas, row by row. run(y)[x] > 0: x is free and starts a free run
@@ -210,19 +220,38 @@ private:
 // The lowest, then leftmost, free place for `shape` in a width x height atlas from row y, column x
 // on, with a top that `below(top)` accepts (true up to some row, then false). Returns true with
 // (y, x) set; false with y at the first row not searched.
+//
+// A row y is searched only if every row of the shape finds a free run as long as its longest span
+// in the atlas row it would cover. When shape row r misses at atlas row Y = y + r (its widest run
+// W is shorter), every later y' whose shape row Y - y' needs more than W misses there too: the
+// search goes on from the first y' whose row at Y needs at most W (or that is past Y). The rows
+// between are only checked against `below`, so y ends where it would without the skip.
+constexpr size_t kCheckedRows = 8;
 template <class Below>
 bool lowestFit(const FreeRuns &runs, const Shape &shape, int side, int height, Below &&below, int &y, int &x) {
     const Span &wr = shape.spans[0];
+    const int16_t *need = shape.need.data();
+    int next = y;        // rows before it are known to miss
+    size_t blocked = 0;  // the span that met an obstacle last
     for (; y + shape.height <= height && below(y + shape.height); ++y, x = 0) {
-        // Every span of the chart needs a long enough run somewhere in its atlas row.
-        bool possible = true;
-        for (const Span &sp : shape.spans)
-            if (runs.widest(y + sp.row) < sp.length) {
-                possible = false;
+        if (y < next)
+            continue;
+        int missed = -1;
+        for (size_t k = 0; k < std::min(shape.needRows.size(), kCheckedRows); ++k) {
+            const int r = shape.needRows[k];
+            if (runs.widest(y + r) < need[r]) {
+                missed = r;
                 break;
             }
-        if (!possible)
+        }
+        if (missed >= 0) {
+            const int widest = runs.widest(y + missed);
+            int r = missed - 1;
+            while (r >= 0 && need[r] > widest)
+                --r;
+            next = y + missed - r;
             continue;
+        }
         while (x + shape.width <= side) {
             const int p = runs.nextRun(y + wr.row, x + wr.left, wr.length);
             if (p < 0)
@@ -230,12 +259,17 @@ bool lowestFit(const FreeRuns &runs, const Shape &shape, int side, int height, B
             x = p - wr.left;
             if (x + shape.width > side)
                 break;
+            // The span that met an obstacle last is tried first: it mostly meets one again.
             bool fits = true;
-            for (size_t k = 1; k < shape.spans.size(); ++k) {
-                const Span &sp = shape.spans[k];
+            for (size_t k = 0; k < shape.spans.size(); ++k) {
+                const size_t i = k == 0 ? blocked : k == blocked ? 0 : k;
+                if (i == 0)
+                    continue;  // the first span fits there (nextRun)
+                const Span &sp = shape.spans[i];
                 const int v = runs.at(y + sp.row, x + sp.left);
                 if (v < sp.length) {
                     x += v > 0 ? v + 1 : -v;  // past the obstacle this row met
+                    blocked = i;
                     fits = false;
                     break;
                 }
