@@ -19,7 +19,7 @@ packages=(
   build-essential cmake pkg-config git ca-certificates dpkg-dev
   meshlab qtbase5-dev libqt5opengl5-dev libglew-dev libeigen3-dev libglm-dev zlib1g-dev libtinygltf-dev
   libgtest-dev libbenchmark-dev xvfb xauth x11-utils xdotool imagemagick python3 libvtk9-dev
-  blender python3-numpy clang-format clang-tidy ccache
+  blender python3-numpy clang-format clang-tidy ccache goxel
 )
 
 as_root() {
