@@ -34,7 +34,4 @@ struct DefaultInitAllocator : std::allocator<T> {
     }
 };
 
-// Bytes whose resize() leaves new bytes unwritten (a map's texels, a bake's per-texel states).
-using ByteBuffer = std::vector<uint8_t, DefaultInitAllocator<uint8_t>>;
-
 }  // namespace voxelfair

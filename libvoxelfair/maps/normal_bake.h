@@ -30,7 +30,7 @@
 // then their frames are solved in one branch-free loop the compiler vectorises.
 #pragma once
 
-#include "base/default_init_allocator.h"
+#include "base/huge_page_allocator.h"
 #include "base/error.h"
 #include "mesh/triangle_mesh.h"
 
@@ -94,8 +94,8 @@ struct NormalBakeOptions {
 struct NormalMap {
     int width = 0, height = 0;
     // width x height RGBA8, rows from the top (v = 1) down like AtlasTexture; alpha 255. A
-    // std::vector of bytes whose resize() does not zero them (base/default_init_allocator.h): the
-    // bake writes each texel once, on the thread baking its rows.
+    // std::vector of bytes whose resize() does not zero them, on huge pages
+    // (base/huge_page_allocator.h): the bake writes each texel once, on the thread baking its rows.
     ByteBuffer rgba;
     // The target's MikkTSpace tangents, 3 per face (xyz, w = bitangent sign): the frame the map
     // was baked against, for exporters (glTF TANGENT).
