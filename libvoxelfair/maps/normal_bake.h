@@ -8,10 +8,13 @@
 // point starts; the point itself is found by geometry: a walk over the source's triangles
 // (surface_walk.h: the projection onto the local sheet, or the closest facing point where the
 // target is well off the source or the sheet faces away from the target's shading normal, the
-// far side of a fold). Where the projection falls inside the triangle under the UV, facing the
-// texel's way (most texels), that is the answer at once; else, if the previous texel of the row started from
-// the same triangle and its answer holds the projection, that answer; else the walk. The
-// source's interpolated vertex normal n there is what the texel encodes. The target triangle under the texel gives the shading frame a glTF / Blender /
+// far side of a fold). Where the projection falls inside the previous texel's source triangle,
+// near it and facing the texel's way (most texels), that is the answer at once; else, in turn,
+// the triangle across the edge the projection left that one by (the walk's first step: a row
+// crosses a source triangle every few texels) and the triangle under the texel's UV; else the
+// walk from the previous texel's triangle (for a triangle's first texel, from the one under its
+// UV). The source's interpolated vertex normal n there is what the texel encodes. The target
+// triangle under the texel gives the shading frame a glTF / Blender /
 // MikkTSpace pixel shader rebuilds there: N and T interpolated from the target's vertex normals
 // and MikkTSpace tangents (mikktspace.h) and normalised, B = w * cross(N, T). The texel stores
 // the unit solution of x T + y B + z N = n (the exact inverse of that shader), as (c + 1) / 2 in

@@ -57,6 +57,13 @@ __attribute__((always_inline)) inline int holdsQuad(const SurfaceWalk &walk, uin
     w[0] = w0, w[1] = w1, w[2] = w2;
     return _mm_movemask_ps(ok);
 }
+// The face across the edge lane `lane` of weights w (on `face`, holdsQuad's) leaves it by
+// (SurfaceWalk::across on the lane's weights, which are holds()'s bit for bit).
+inline uint32_t acrossLane(const SurfaceWalk &walk, uint32_t face, const __m128 w[3], int lane) {
+    alignas(16) float w0[4], w1[4], w2[4];
+    _mm_store_ps(w0, w[0]), _mm_store_ps(w1, w[1]), _mm_store_ps(w2, w[2]);
+    return walk.across(face, glm::vec3(w0[lane], w1[lane], w2[lane]));
+}
 __attribute__((always_inline)) inline void quadNormals(const SurfaceWalk &walk, uint32_t face, const __m128 w[3],
                                                        __m128 n[3]) {
     const glm::vec3 *cn = walk.cornerNormals(face);
@@ -180,26 +187,38 @@ NormalMap bakeNormalMapWork(const NormalBakeMesh &source, const NormalBakeMesh &
             const QuadTarget quadTarget(tp[0], e1, e2, tn);
 #endif
             // The texels are visited row by row, left to right. A texel's source point is most
-            // often on the face of the texel before it (checked first), else on the source face
-            // under its UV (the atlas' correspondence); failing both, the walk starts from the
-            // texel before it (a step or two away on the same sheet), or, for a row's first texel,
-            // from the previous row's first answer, for the triangle's first texel from the face
-            // under its UV (the UV grid's nearest where none is).
+            // often on the face of the texel before it (checked first), else on the face across
+            // the edge it left that face by (the walk's first step: rows cross a source face every
+            // few texels), else on the source face under its UV (the atlas' correspondence);
+            // failing all, the walk starts from the texel before it (a step or two away on the
+            // same sheet), or, for a row's first texel, from the previous row's first answer, for
+            // the triangle's first texel from the face under its UV (the UV grid's nearest where
+            // none is).
             uint32_t hitFace = UINT32_MAX, rowFace = UINT32_MAX;
-            // The source normal at texel (x, y) with weights l1, l2; false when no source face is near.
-            // `tried`: the texel is known not to be on hitFace (holdsQuad said so); `both`: nor on
-            // the face under its UV.
-            auto sourceNormal = [&](int x, int y, float l1, float l2, glm::vec3 &n, bool tried, bool both) {
+            // The source normal at texel (x, y) with weights l1, l2; false when no source face is
+            // near. `tried`: the texel is known not to be on hitFace (holdsQuad said so) and left
+            // it for `next` (SurfaceWalk::across); `both`: nor on `next` and the face under its UV.
+            auto sourceNormal = [&](int x, int y, float l1, float l2, glm::vec3 &n, bool tried, bool both,
+                                    uint32_t next) {
                 const glm::vec3 p = tp[0] + l1 * e1 + l2 * e2;
                 const float l0 = 1.0f - l1 - l2;
                 const glm::vec3 facing = l0 * tn[0] + l1 * tn[1] + l2 * tn[2];
                 glm::vec3 weights;
-                if (!tried && hitFace != UINT32_MAX && walk->holds(p, hitFace, facing, weights)) {
+                if (!tried && hitFace != UINT32_MAX) {
+                    if (walk->holds(p, hitFace, facing, weights)) {
+                        n = walk->normalAt(hitFace, weights);
+                        return true;
+                    }
+                    next = walk->across(hitFace, weights);
+                }
+                if (!both && next != UINT32_MAX && walk->holds(p, next, facing, weights)) {
+                    hitFace = next;
                     n = walk->normalAt(hitFace, weights);
                     return true;
                 }
                 const uint32_t start = under[size_t(y - r0) * size_t(width) + size_t(x)];
-                if (!both && start != UINT32_MAX && start != hitFace && walk->holds(p, start, facing, weights)) {
+                if (!both && start != UINT32_MAX && start != hitFace && start != next &&
+                    walk->holds(p, start, facing, weights)) {
                     hitFace = start;
                     n = walk->normalAt(hitFace, weights);
                     return true;
@@ -227,9 +246,10 @@ NormalMap bakeNormalMapWork(const NormalBakeMesh &source, const NormalBakeMesh &
                 const bool centres = zl <= zr;
                 const int from = centres ? std::min(cl, zl) : cl, to = centres ? std::max(cr, zr) : cr;
                 batch.startRow(stateRow, imageRow, from, to - from + 1);
-                auto visit = [&](int x, float l1, float l2, bool tried = false, bool both = false) {
+                auto visit = [&](int x, float l1, float l2, bool tried = false, bool both = false,
+                                 uint32_t next = UINT32_MAX) {
                     glm::vec3 n(0.0f);
-                    if (!sourceNormal(x, y, l1, l2, n, tried, both))
+                    if (!sourceNormal(x, y, l1, l2, n, tried, both, next))
                         n = glm::vec3(0.0f);
                     if (first)
                         rowFace = hitFace, first = false;
@@ -255,13 +275,15 @@ NormalMap bakeNormalMapWork(const NormalBakeMesh &source, const NormalBakeMesh &
                 if (centres) {
                     const double px = zl + 0.5 - q[0].x;
                     double l1 = a1 * px + b1 * py, l2 = a2 * px + b2 * py;
-                    bool tried = false;  // texel x is known not to be on hitFace
+                    bool tried = false;          // texel x is known not to be on hitFace,
+                    uint32_t next = UINT32_MAX;  // and left it for this face
                     for (int x = zl; x <= zr;) {
 #if VOXELFAIR_SSE2
                         // 4 texels at once (those past zr ignored) against the face of the texel
                         // before them (the fast path), else, when the first is not on it, against
-                        // the face under the first's UV, as sourceNormal tries them: the texels up
-                        // to the first that is not on that face are done.
+                        // the face it left that one by, then the face under the first's UV, as
+                        // sourceNormal tries them: the texels up to the first that is not on the
+                        // face that holds the first are done.
                         if (hitFace != UINT32_MAX) {
                             // The weights of the 4 texels, stepped in doubles as one texel at a
                             // time does it (l1 and l2 side by side), then rounded to float.
@@ -274,10 +296,18 @@ NormalMap bakeNormalMapWork(const NormalBakeMesh &source, const NormalBakeMesh &
                             const __m128 L1 = _mm_movelh_ps(w01, w23), L2 = _mm_movehl_ps(w23, w01);
                             __m128 weights[3];
                             const int lanes = (1 << std::min(4, zr - x + 1)) - 1;
-                            int held = tried ? 0 : holdsQuad(*walk, hitFace, L1, L2, quadTarget, weights) & lanes;
+                            int held = 0;
+                            if (!tried) {
+                                held = holdsQuad(*walk, hitFace, L1, L2, quadTarget, weights) & lanes;
+                                if ((held & 1) == 0)
+                                    next = acrossLane(*walk, hitFace, weights, 0);
+                            }
+                            if ((held & 1) == 0 && next != UINT32_MAX &&
+                                ((held = holdsQuad(*walk, next, L1, L2, quadTarget, weights) & lanes) & 1) != 0)
+                                hitFace = next;
                             if ((held & 1) == 0) {
                                 const uint32_t start = under[size_t(y - r0) * size_t(width) + size_t(x)];
-                                if (start != UINT32_MAX && start != hitFace &&
+                                if (start != UINT32_MAX && start != hitFace && start != next &&
                                     ((held = holdsQuad(*walk, start, L1, L2, quadTarget, weights) & lanes) & 1) != 0)
                                     hitFace = start;
                             }
@@ -290,6 +320,8 @@ NormalMap bakeNormalMapWork(const NormalBakeMesh &source, const NormalBakeMesh &
                                 while (k < 4 && (held >> k & 1) != 0)
                                     ++k;
                                 batch.setQuad(x, L1, L2, n, k);
+                                if (k < 4)  // lane k is not on hitFace: the face it left it for
+                                    next = acrossLane(*walk, hitFace, weights, k);
                                 x += k;
                                 if (k == 4)
                                     l1 = _mm_cvtsd_f64(m), l2 = _mm_cvtsd_f64(_mm_unpackhi_pd(m, m));
@@ -306,7 +338,7 @@ NormalMap bakeNormalMapWork(const NormalBakeMesh &source, const NormalBakeMesh &
                             continue;
                         }
 #endif
-                        visit(x, float(l1), float(l2), tried);
+                        visit(x, float(l1), float(l2), tried, false, next);
                         ++x, l1 += a1, l2 += a2;
                         tried = false;
                     }

@@ -92,6 +92,20 @@ public:
         }
         return closestAround(p, face, facing, marks);
     }
+    // The face beyond the edge of `face` that a point of weights w on it (as holds() gives them)
+    // lies past: across the edge facing the most negative weight, project()'s first step;
+    // UINT32_MAX where no weight is negative or that edge is a border or non-manifold.
+    uint32_t across(uint32_t face, const glm::vec3 &w) const {
+        int k = 0;
+        if (w[1] < w[k])
+            k = 1;
+        if (w[2] < w[k])
+            k = 2;
+        if (w[k] >= 0.0f)
+            return UINT32_MAX;
+        const uint32_t h = faces_[face].opposite[(k + 1) % 3];
+        return h == UINT32_MAX ? UINT32_MAX : h / 3;
+    }
     // The vertex normals interpolated at a hit (not normalised).
     glm::vec3 normalAt(const Hit &hit) const { return normalAt(hit.face, hit.weights); }
     glm::vec3 normalAt(uint32_t face, const glm::vec3 &w) const {
