@@ -1,6 +1,12 @@
 // A scene's parts meshed as one surface in model space (extractSceneSurface, scene/voxel_scene.h).
 #include "scene/voxel_scene.h"
 
+#include "base/parallel_bands.h"
+
+#include <algorithm>
+#include <exception>
+#include <vector>
+
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
@@ -32,14 +38,53 @@ static void appendPart(SceneSurface &out, const BoundarySurface &surface, const 
     out.stats.nonManifoldVerticesSplit += surface.stats.nonManifoldVerticesSplit;
 }
 
-SceneSurface extractSceneSurface(const VoxelScene &scene) {
+namespace {
+
+// Parts extracted side by side, then appended in order: at most this many kept at once (a
+// scene may hold 2^20 small instances).
+constexpr size_t kPartWindow = 64;
+// A window of fewer voxels than this is extracted on one thread: starting threads would cost more.
+constexpr size_t kLeastParallelVoxels = size_t(1) << 14;
+
+bool hasVoxels(const PlacedVolume &part) { return part.volume != nullptr && !part.volume->empty(); }
+
+}  // namespace
+
+SceneSurface extractSceneSurface(const VoxelScene &scene, int threads) {
     SceneSurface out;
-    for (const PlacedVolume &part : scene.parts) {
-        if (part.volume == nullptr || part.volume->empty()) {
-            out.partQuadCounts.push_back(0);
-            continue;
+    const size_t parts = scene.parts.size();
+    std::vector<BoundarySurface> surfaces;
+    std::vector<std::exception_ptr> failures;
+    for (size_t first = 0; first < parts; first += kPartWindow) {
+        const size_t count = std::min(kPartWindow, parts - first);
+        size_t voxels = 0, busy = 0;
+        for (size_t k = first; k < first + count; ++k)
+            if (hasVoxels(scene.parts[k])) {
+                voxels += scene.parts[k].volume->voxelCount();
+                ++busy;
+            }
+        surfaces.assign(count, BoundarySurface{});
+        failures.assign(count, nullptr);
+        const int workers = voxels >= kLeastParallelVoxels ? bandThreads(threads, busy) : 1;
+        runBands(count, workers, [&](size_t k) {
+            const PlacedVolume &part = scene.parts[first + k];
+            if (!hasVoxels(part))
+                return;
+            try {
+                surfaces[k] = extractBoundarySurface(*part.volume);
+            } catch (...) {  // rethrown below, in part order
+                failures[k] = std::current_exception();
+            }
+        });
+        for (size_t k = 0; k < count; ++k) {
+            if (failures[k])
+                std::rethrow_exception(failures[k]);
+            const PlacedVolume &part = scene.parts[first + k];
+            if (!hasVoxels(part))
+                out.partQuadCounts.push_back(0);
+            else
+                appendPart(out, surfaces[k], part, scene.palette);
         }
-        appendPart(out, extractBoundarySurface(*part.volume), part, scene.palette);
     }
     return out;
 }

@@ -41,7 +41,9 @@ struct SceneSurface {
 
 // Extracts each part's manifold boundary (extractBoundarySurface), maps it to model space and
 // concatenates. A part whose transform mirrors space gets its quads reversed, so every quad
-// stays counter-clockwise seen from outside.
-SceneSurface extractSceneSurface(const VoxelScene &scene);
+// stays counter-clockwise seen from outside. The parts are extracted side by side on up to
+// `threads` threads (0: one per hardware thread), a window of parts at a time, and joined in
+// part order: the same surface for any count.
+SceneSurface extractSceneSurface(const VoxelScene &scene, int threads = 0);
 
 }  // namespace voxelfair
