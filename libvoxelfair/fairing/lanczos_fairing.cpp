@@ -3,6 +3,7 @@
 #include "fairing/lanczos_kernel.h"
 #include "fairing/voxel_size.h"
 #include "base/error.h"
+#include "base/parallel_bands.h"
 #include "mesh/vector_helpers.h"
 
 #include <algorithm>
@@ -14,14 +15,17 @@
 
 namespace voxelfair {
 
-FairingPassStats lanczosFairingPass(const glm::vec3 *in, glm::vec3 *out, const CsrAdjacency &neighbours,
-                                    const uint8_t *vertexSelected, float lambda, float voxelSize) {
+namespace {
+
+// Meshes with fewer vertices are smoothed on one thread: starting a second would cost more.
+constexpr size_t kLeastParallelVertices = 16384;
+
+// Vertices [from, to) of a pass; maxMove2 the longest squared move among them.
+void fairVertices(const glm::vec3 *in, glm::vec3 *out, const CsrAdjacency &neighbours, const uint8_t *vertexSelected,
+                  float lambda, float voxelSize, size_t from, size_t to, size_t &moved, float &maxMove2) {
     constexpr float kMaxLength2 = std::numeric_limits<float>::max();
     constexpr float kCountedMove2 = 1e-12f;  // (1e-6 voxel)^2
-    FairingPassStats stats;
-    float maxMove2 = 0.0f;
-    const size_t vertexCount = neighbours.rowCount();
-    for (size_t v = 0; v < vertexCount; ++v) {
+    for (size_t v = from; v < to; ++v) {
         const glm::vec3 p = in[v];
         out[v] = p;
         if (vertexSelected && !vertexSelected[v])
@@ -50,9 +54,32 @@ FairingPassStats lanczosFairingPass(const glm::vec3 *in, glm::vec3 *out, const C
         // On flat regions the unit vectors cancel only up to float rounding (d ~ 1e-8, a move of
         // ~1e-16 voxel): count as moved only what moves by more than a millionth of a voxel.
         if (move2 > kCountedMove2 * voxelSize * voxelSize)
-            ++stats.movedVertices;
+            ++moved;
     }
-    stats.maxDisplacement = std::sqrt(maxMove2);
+}
+
+}  // namespace
+
+FairingPassStats lanczosFairingPass(const glm::vec3 *in, glm::vec3 *out, const CsrAdjacency &neighbours,
+                                    const uint8_t *vertexSelected, float lambda, float voxelSize, int threads) {
+    // Each vertex reads `in` only, so bands of vertices run apart; their counts add up and their
+    // longest moves compare exactly: the same pass for any thread count.
+    const size_t vertexCount = neighbours.rowCount();
+    const int workers = vertexCount >= kLeastParallelVertices ? bandThreads(threads, 2) : 1;
+    const size_t bands = workers > 1 ? 2 * size_t(workers) : 1;
+    std::vector<size_t> moved(bands, 0);
+    std::vector<float> maxMove2(bands, 0.0f);
+    runBands(bands, workers, [&](size_t b) {
+        fairVertices(in, out, neighbours, vertexSelected, lambda, voxelSize, vertexCount * b / bands,
+                     vertexCount * (b + 1) / bands, moved[b], maxMove2[b]);
+    });
+    FairingPassStats stats;
+    float longest2 = 0.0f;
+    for (size_t b = 0; b < bands; ++b) {
+        stats.movedVertices += moved[b];
+        longest2 = std::max(longest2, maxMove2[b]);
+    }
+    stats.maxDisplacement = std::sqrt(longest2);
     return stats;
 }
 
@@ -102,7 +129,7 @@ FairingReport fairModifiedLanczos(const MutablePolygonMesh &mesh, const uint8_t 
         if (pass > 0)
             std::copy(positions, positions + vertexCount, previous.begin());
         const FairingPassStats stats = lanczosFairingPass(previous.data(), positions, neighbours, vertexSelected,
-                                                          options.lambda, report.voxelSize);
+                                                          options.lambda, report.voxelSize, options.threads);
         report.movedVertices = stats.movedVertices;
         report.maxDisplacement = std::max(report.maxDisplacement, stats.maxDisplacement);
         ++report.passes;

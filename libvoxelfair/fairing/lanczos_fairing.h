@@ -27,6 +27,9 @@ struct LanczosFairingOptions {
     int passes = 1;
     // Size of a voxel in the positions' units: the displacement unit. 0 = detectVoxelSize().
     float voxelSize = 0.0f;
+    // Threads smoothing the vertices (0: one per hardware thread; meshes under 16384 vertices
+    // use one). Every vertex reads the positions from before the pass: the same result for any count.
+    int threads = 0;
 };
 
 // What a fairing call did. Invalid input is not a status: it throws (base/error.h).
@@ -73,9 +76,10 @@ struct FairingPassStats {
 };
 
 // One Jacobi pass of eqs. 8-10 with a prebuilt buildVertexNeighbours() adjacency: reads `in`,
-// writes every vertex of `out` (a different array of the same size). No validation: lambda and
+// writes every vertex of `out` (a different array of the same size), on up to `threads` threads
+// (0: one per hardware thread; the same result for any count). No validation: lambda and
 // voxelSize must be finite, the adjacency must match the arrays.
 FairingPassStats lanczosFairingPass(const glm::vec3 *in, glm::vec3 *out, const CsrAdjacency &neighbours,
-                                    const uint8_t *vertexSelected, float lambda, float voxelSize);
+                                    const uint8_t *vertexSelected, float lambda, float voxelSize, int threads = 1);
 
 }  // namespace voxelfair
