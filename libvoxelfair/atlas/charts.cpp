@@ -198,71 +198,122 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
         out.chartSize.push_back(hi - lo);
     };
 
-    // Whether the last chart's projection winds over itself (chart_overlap.h).
-    std::vector<ChartBoundaryEdge> boundary;
-    std::vector<ChartCorner> corners;
-    std::vector<uint32_t> boundaryStamp;  // per vertex: the last chart it bounded
-    auto foldsOver = [&](uint32_t c) {
-        boundary.clear();
-        for (size_t i = out.chartFirstFace[c]; i < out.chartFaces.size(); ++i) {
+    // Whether chart c's projection (its faces up to chartFaces[end]) winds over itself
+    // (chart_overlap.h). Reads the charts only: checks of grown charts can run side by side, each
+    // with its own scratch.
+    struct FoldScratch {
+        std::vector<ChartBoundaryEdge> boundary;
+        std::vector<ChartCorner> corners;
+        std::vector<uint32_t> boundaryStamp;  // per vertex: the last chart it bounded
+    };
+    auto foldsOver = [&](uint32_t c, size_t end, FoldScratch &s) {
+        s.boundary.clear();
+        for (size_t i = out.chartFirstFace[c]; i < end; ++i) {
             const uint32_t f = out.chartFaces[i];
             for (int k = 0; k < 3; ++k) {
                 const uint32_t o = adjacency.opposite[3 * f + k];
                 if (o != kNoOpposite && out.faceChart[o / 3] == c)
                     continue;
                 const int k1 = (k + 1) % 3;
-                boundary.push_back({out.wedgeUv[3 * i + k], out.wedgeUv[3 * i + k1], mesh.triangles[3 * f + k],
-                                    mesh.triangles[3 * f + k1]});
+                s.boundary.push_back({out.wedgeUv[3 * i + k], out.wedgeUv[3 * i + k1], mesh.triangles[3 * f + k],
+                                      mesh.triangles[3 * f + k1]});
             }
         }
-        if (boundaryCrossesItself(boundary))
+        if (boundaryCrossesItself(s.boundary))
             return true;
         // Only the boundary's vertices: around an inner vertex the chart's faces close one fan.
-        for (const ChartBoundaryEdge &e : boundary)
+        for (const ChartBoundaryEdge &e : s.boundary)
             for (uint32_t v : {e.va, e.vb}) {
-                if (v >= boundaryStamp.size())
-                    boundaryStamp.resize(size_t(v) + 1, UINT32_MAX);
-                boundaryStamp[v] = c;
+                if (v >= s.boundaryStamp.size())
+                    s.boundaryStamp.resize(size_t(v) + 1, UINT32_MAX);
+                s.boundaryStamp[v] = c;
             }
-        corners.clear();
-        for (size_t i = out.chartFirstFace[c]; i < out.chartFaces.size(); ++i) {
+        s.corners.clear();
+        for (size_t i = out.chartFirstFace[c]; i < end; ++i) {
             const glm::vec2 *w = &out.wedgeUv[3 * i];
             if (doubleArea(w[0], w[1], w[2]) <= 0)
                 continue;  // no sector (degenerate in UV)
             for (int k = 0; k < 3; ++k) {
                 const uint32_t v = mesh.triangles[3 * size_t(out.chartFaces[i]) + k];
-                if (v >= boundaryStamp.size() || boundaryStamp[v] != c)
+                if (v >= s.boundaryStamp.size() || s.boundaryStamp[v] != c)
                     continue;
                 const double from = diamondAngle(glm::dvec2(w[(k + 1) % 3] - w[k]));
                 double to = diamondAngle(glm::dvec2(w[(k + 2) % 3] - w[k]));
                 to += to < from ? kDiamondTurn : 0;
-                corners.push_back({v, from, to - from});
+                s.corners.push_back({v, from, to - from});
             }
         }
-        return cornersOverlap(corners);
+        return cornersOverlap(s.corners);
+    };
+    FoldScratch scratch;
+    // The last chart, cut back to the half of its faces nearest its seed (a prefix of the
+    // breadth-first order, so still connected) while it winds over itself; true if it was.
+    auto cutWhileFolded = [&](uint32_t c) {
+        bool cut = false;
+        while (foldsOver(c, out.chartFaces.size(), scratch)) {
+            const size_t first = out.chartFirstFace[c];
+            const size_t keep = first + std::max<size_t>(1, (out.chartFaces.size() - first) / 2);
+            for (size_t i = keep; i < out.chartFaces.size(); ++i)
+                out.faceChart[out.chartFaces[i]] = kFree;
+            out.chartFaces.resize(keep);
+            out.chartSize.pop_back();
+            project(c);
+            ++out.foldedCharts;
+            cut = true;
+        }
+        return cut;
     };
 
-    // Charts in seed order. A chart that winds over itself keeps the half of its faces nearest
-    // its seed (a prefix of the breadth-first order, so still connected) until it does not;
-    // the faces it lets go are charted in a further pass.
+    // Charts in seed order, each checked for folds as it is grown; the faces a folded chart lets
+    // go are charted in a further pass. The first pass of a larger mesh is grown whole first and
+    // its charts checked afterwards on two threads: the checks only read the charts, so without a
+    // fold that is the same as checking each at once. At the first chart that folds, the charts
+    // grown after it are dropped (their faces freed) and the pass goes on from its seed as before.
+    const int foldWorkers = faceCount >= kLeastParallelFaces ? bandThreads(options.threads, 2) : 1;
+    bool speculate = foldWorkers > 1;
     for (bool released = true; released;) {
         released = false;
-        for (uint32_t seed : order) {
+        size_t next = 0;  // the position in `order` to go on from
+        if (speculate) {
+            speculate = false;
+            const uint32_t firstChart = uint32_t(out.chartAxis.size());
+            std::vector<size_t> seedAt;  // per chart grown here: its seed's position in `order`
+            for (size_t k = 0; k < order.size(); ++k) {
+                if (out.faceChart[order[k]] != kFree)
+                    continue;
+                project(grow(order[k]));
+                seedAt.push_back(k);
+            }
+            const size_t grown = seedAt.size();
+            auto endOf = [&](size_t c) {
+                return c + 1 < out.chartFirstFace.size() ? size_t(out.chartFirstFace[c + 1]) : out.chartFaces.size();
+            };
+            std::vector<uint8_t> folds(grown, 0);
+            std::vector<FoldScratch> scratches(static_cast<size_t>(foldWorkers));
+            // One chart a band: a few large charts hold most of the work.
+            runWorkerBands(grown, foldWorkers, [&](size_t k, int worker) {
+                folds[k] = foldsOver(firstChart + uint32_t(k), endOf(firstChart + k), scratches[size_t(worker)]);
+            });
+            const size_t folded = size_t(std::find(folds.begin(), folds.end(), 1) - folds.begin());
+            if (folded == grown)
+                break;  // no chart folds: the pass is done, and nothing was let go
+            const uint32_t c = firstChart + uint32_t(folded);
+            for (size_t i = endOf(c); i < out.chartFaces.size(); ++i)
+                out.faceChart[out.chartFaces[i]] = kFree;
+            out.chartFaces.resize(endOf(c));
+            out.chartFirstFace.resize(size_t(c) + 1);
+            out.chartAxis.resize(size_t(c) + 1);
+            out.chartSize.resize(size_t(c) + 1);
+            released = cutWhileFolded(c);
+            next = seedAt[folded] + 1;
+        }
+        for (; next < order.size(); ++next) {
+            const uint32_t seed = order[next];
             if (out.faceChart[seed] != kFree)
                 continue;
             const uint32_t c = grow(seed);
             project(c);
-            while (foldsOver(c)) {
-                const size_t first = out.chartFirstFace[c];
-                const size_t keep = first + std::max<size_t>(1, (out.chartFaces.size() - first) / 2);
-                for (size_t i = keep; i < out.chartFaces.size(); ++i)
-                    out.faceChart[out.chartFaces[i]] = kFree;
-                out.chartFaces.resize(keep);
-                out.chartSize.pop_back();
-                project(c);
-                ++out.foldedCharts;
-                released = true;
-            }
+            released = cutWhileFolded(c) || released;
         }
     }
 

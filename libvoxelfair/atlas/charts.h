@@ -58,7 +58,9 @@ struct ChartOptions {
     // pieces that cover at least that much. Default 1/8; 0 cuts none.
     float minChartFill = 0.125f;
     // Threads (0: one per hardware thread): the faces' edge adjacency is built beside their
-    // normals and seed order on a second one. The charts are the same for any count.
+    // normals and seed order on a second one, and on meshes of 4096 faces or more the first
+    // pass's fold checks run on two after its charts are grown. The charts are the same for any
+    // count.
     int threads = 0;
 };
 

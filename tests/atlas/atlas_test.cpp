@@ -380,6 +380,38 @@ TEST(Charts, AChartWindingOverItselfIsCutBack) {
     expectValidAtlas(ramp, charts, layout, kMergeCone);  // includes: no texel centre under two faces
 }
 
+// The first pass's fold checks run on two threads after the charts are grown (larger meshes):
+// with a chart that folds among others before and after it, the charts must be those of the
+// one-thread pass (grown and checked one by one).
+TEST(Charts, FoldChecksOnThreadsGiveTheSameCharts) {
+    TestMesh mesh = smoothed(voxelSphere(14));
+    const TestMesh ramp = helicalRamp();
+    for (int copy = 0; copy < 4; ++copy) {  // ramps side by side: above the parallel threshold
+        const uint32_t base = uint32_t(mesh.positions.size());
+        for (const glm::vec3 &p : ramp.positions)
+            mesh.positions.push_back(p + glm::vec3(40.0f + 12.0f * float(copy), 0.0f, 0.0f));
+        for (uint32_t v : ramp.triangles)
+            mesh.triangles.push_back(base + v);
+        mesh.faceColours.insert(mesh.faceColours.end(), ramp.faceColours.begin(), ramp.faceColours.end());
+        mesh.vertexColours.insert(mesh.vertexColours.end(), ramp.vertexColours.begin(), ramp.vertexColours.end());
+    }
+    ASSERT_GE(mesh.faceCount(), 4096u);
+    ChartOptions one;
+    one.threads = 1;
+    const AtlasCharts reference = computeCharts(mesh.view(), one);
+    EXPECT_GT(reference.foldedCharts, 0u);
+    for (int threads : {2, 5}) {
+        ChartOptions options;
+        options.threads = threads;
+        const AtlasCharts charts = computeCharts(mesh.view(), options);
+        EXPECT_EQ(charts.chartFaces, reference.chartFaces) << threads << " threads";
+        EXPECT_EQ(charts.chartFirstFace, reference.chartFirstFace) << threads << " threads";
+        EXPECT_EQ(charts.wedgeUv, reference.wedgeUv) << threads << " threads";
+        EXPECT_EQ(charts.chartAxis, reference.chartAxis) << threads << " threads";
+        EXPECT_EQ(charts.foldedCharts, reference.foldedCharts) << threads << " threads";
+    }
+}
+
 // Two faces at one vertex whose sectors overlap (the chart went round the vertex past a gap)
 // fold the chart though no two boundary edges cross; a full fan of six does not.
 TEST(Charts, SectorsOverlappingAtAVertexAreAFold) {
