@@ -134,12 +134,21 @@ NormalMap bakeNormalMapWork(const NormalBakeMesh &source, const NormalBakeMesh &
     }
     const size_t bandCount = bands.start.size() - 1;
     std::vector<size_t> baked(bandCount, 0), flat(bandCount, 0);
+    // A row's texels a triangle only overlaps, left for the band's second pass: cl..cr but the
+    // centres zl..zr (zl > zr: none), the walk starting from `left` before the centres and from
+    // `right` after them (the source faces of the first pass' texels there).
+    struct OverlapRow {
+        uint32_t face;  // the index in the band's faces
+        int y, cl, cr, zl, zr;
+        uint32_t left, right;
+    };
     // Per thread: the band's source faces under the texel centres, a triangle's texels, the faces
-    // the walk's closest-point refinement has measured.
+    // the walk's closest-point refinement has measured, the rows of overlapped texels.
     struct Scratch {
         std::vector<uint32_t> under;
         TexelBatch batch;
         SurfaceWalk::Marks marks;
+        std::vector<OverlapRow> overlaps;
     };
     std::vector<Scratch> scratch(size_t(bandThreads(options.threads, bandCount)));
     runWorkerBands(bandCount, options.threads, [&](size_t band, int worker) {
@@ -158,197 +167,252 @@ NormalMap bakeNormalMapWork(const NormalBakeMesh &source, const NormalBakeMesh &
         under.assign(size_t(r1 - r0) * size_t(width), UINT32_MAX);
         for (uint32_t i = sourceBands.start[band]; i < sourceBands.start[band + 1]; ++i)
             fillFacesUnder(sorted->mesh, sourceBands.faces[i], width, height, r0, r1, under.data());
-        for (uint32_t i = bands.start[band]; i < bands.start[band + 1]; ++i) {
-            const size_t f = bands.faces[i];
-            loadUv(target, f, width, height, q);
-            const double d = doubleArea(q[0], q[1], q[2]);
-            if (!(d != 0) || !std::isfinite(d))
-                continue;
-            // Barycentric weights as affine functions of the texel centre: l = l0 + lx x + ly y.
-            const double a1 = (q[2].y - q[0].y) / d, b1 = -(q[2].x - q[0].x) / d;
-            const double a2 = -(q[1].y - q[0].y) / d, b2 = (q[1].x - q[0].x) / d;
-            glm::vec3 tp[3], tn[3], tt[3];
-            float w = 0.0f;
-            for (int k = 0; k < 3; ++k) {
-                const uint32_t v = target.triangles[3 * f + size_t(k)];
-                tp[k] = target.positions[v];
-                tn[k] = target.normals[v];
-                tt[k] = glm::vec3(out.cornerTangents[3 * f + size_t(k)]);
-                w += out.cornerTangents[3 * f + size_t(k)].w;
+        // Two passes over the band's triangles: their texel centres first, then the texels they
+        // merely overlap that no centre claimed (the first triangle in the band's order that
+        // overlaps one claims it, as in a single pass, but no overlap is baked only to be
+        // overwritten by a later triangle's centre: three in four were, on the benchmark mesh).
+        std::vector<OverlapRow> &overlapRows = scratch[size_t(worker)].overlaps;
+        overlapRows.clear();
+        size_t nextOverlap = 0;  // the second pass' next row
+        const uint32_t firstFace = bands.start[band], endFace = bands.start[band + 1];
+        for (int pass = 0; pass < 2; ++pass) {
+            if (pass == 1) {
+                // Only the rows with an overlapped texel no centre claimed.
+                auto unclaimed = [&](const OverlapRow &row) {
+                    const uint8_t *const s = states + size_t(row.y) * size_t(width);
+                    for (int x = row.cl; x <= row.cr; ++x)
+                        if ((x < row.zl || x > row.zr) && s[x] == 0)
+                            return true;
+                    return false;
+                };
+                overlapRows.erase(std::remove_if(overlapRows.begin(), overlapRows.end(),
+                                                 [&](const OverlapRow &row) { return !unclaimed(row); }),
+                                  overlapRows.end());
             }
-            const glm::vec3 e1 = tp[1] - tp[0], e2 = tp[2] - tp[0];
-            const float sign = w < 0.0f ? -1.0f : 1.0f;
-            TargetFrame targetFrame;
-            for (int k = 0; k < 3; ++k)
-                for (int a = 0; a < 3; ++a)
-                    targetFrame.n[k][a] = tn[k][a], targetFrame.t[k][a] = tt[k][a];
-            targetFrame.sign = sign;
+            for (uint32_t i = firstFace; i < endFace; ++i) {
+                if (pass == 1 && (nextOverlap == overlapRows.size() || overlapRows[nextOverlap].face != i))
+                    continue;
+                const size_t f = bands.faces[i];
+                loadUv(target, f, width, height, q);
+                const double d = doubleArea(q[0], q[1], q[2]);
+                if (!(d != 0) || !std::isfinite(d))
+                    continue;
+                // Barycentric weights as affine functions of the texel centre: l = l0 + lx x + ly y.
+                const double a1 = (q[2].y - q[0].y) / d, b1 = -(q[2].x - q[0].x) / d;
+                const double a2 = -(q[1].y - q[0].y) / d, b2 = (q[1].x - q[0].x) / d;
+                glm::vec3 tp[3], tn[3], tt[3];
+                float w = 0.0f;
+                for (int k = 0; k < 3; ++k) {
+                    const uint32_t v = target.triangles[3 * f + size_t(k)];
+                    tp[k] = target.positions[v];
+                    tn[k] = target.normals[v];
+                    tt[k] = glm::vec3(out.cornerTangents[3 * f + size_t(k)]);
+                    w += out.cornerTangents[3 * f + size_t(k)].w;
+                }
+                const glm::vec3 e1 = tp[1] - tp[0], e2 = tp[2] - tp[0];
+                const float sign = w < 0.0f ? -1.0f : 1.0f;
+                TargetFrame targetFrame;
+                for (int k = 0; k < 3; ++k)
+                    for (int a = 0; a < 3; ++a)
+                        targetFrame.n[k][a] = tn[k][a], targetFrame.t[k][a] = tt[k][a];
+                targetFrame.sign = sign;
 #if VOXELFAIR_SSE2
-            const QuadTarget quadTarget(tp[0], e1, e2, tn);
+                const QuadTarget quadTarget(tp[0], e1, e2, tn);
 #endif
-            // The texels are visited row by row, left to right. A texel's source point is most
-            // often on the face of the texel before it (checked first), else on the face across
-            // the edge it left that face by (the walk's first step: rows cross a source face every
-            // few texels), else on the source face under its UV (the atlas' correspondence);
-            // failing all, the walk starts from the texel before it (a step or two away on the
-            // same sheet), or, for a row's first texel, from the previous row's first answer, for
-            // the triangle's first texel from the face under its UV (the UV grid's nearest where
-            // none is).
-            uint32_t hitFace = UINT32_MAX, rowFace = UINT32_MAX;
-            // The source normal at texel (x, y) with weights l1, l2; false when no source face is
-            // near. `tried`: the texel is known not to be on hitFace (holdsQuad said so) and left
-            // it for `next` (SurfaceWalk::across); `both`: nor on `next` and the face under its UV.
-            auto sourceNormal = [&](int x, int y, float l1, float l2, glm::vec3 &n, bool tried, bool both,
-                                    uint32_t next) {
-                const glm::vec3 p = tp[0] + l1 * e1 + l2 * e2;
-                const float l0 = 1.0f - l1 - l2;
-                const glm::vec3 facing = l0 * tn[0] + l1 * tn[1] + l2 * tn[2];
-                glm::vec3 weights;
-                if (!tried && hitFace != UINT32_MAX) {
-                    if (walk->holds(p, hitFace, facing, weights)) {
+                // The texels are visited row by row, left to right. A texel's source point is most
+                // often on the face of the texel before it (checked first), else on the face across
+                // the edge it left that face by (the walk's first step: rows cross a source face every
+                // few texels), else on the source face under its UV (the atlas' correspondence);
+                // failing all, the walk starts from the texel before it (a step or two away on the
+                // same sheet), or, for a row's first texel, from the previous row's first answer, for
+                // the triangle's first texel from the face under its UV (the UV grid's nearest where
+                // none is).
+                uint32_t hitFace = UINT32_MAX, rowFace = UINT32_MAX;
+                // The source normal at texel (x, y) with weights l1, l2; false when no source face is
+                // near. `tried`: the texel is known not to be on hitFace (holdsQuad said so) and left
+                // it for `next` (SurfaceWalk::across); `both`: nor on `next` and the face under its UV.
+                auto sourceNormal = [&](int x, int y, float l1, float l2, glm::vec3 &n, bool tried, bool both,
+                                        uint32_t next) {
+                    const glm::vec3 p = tp[0] + l1 * e1 + l2 * e2;
+                    const float l0 = 1.0f - l1 - l2;
+                    const glm::vec3 facing = l0 * tn[0] + l1 * tn[1] + l2 * tn[2];
+                    glm::vec3 weights;
+                    if (!tried && hitFace != UINT32_MAX) {
+                        if (walk->holds(p, hitFace, facing, weights)) {
+                            n = walk->normalAt(hitFace, weights);
+                            return true;
+                        }
+                        next = walk->across(hitFace, weights);
+                    }
+                    if (!both && next != UINT32_MAX && walk->holds(p, next, facing, weights)) {
+                        hitFace = next;
                         n = walk->normalAt(hitFace, weights);
                         return true;
                     }
-                    next = walk->across(hitFace, weights);
-                }
-                if (!both && next != UINT32_MAX && walk->holds(p, next, facing, weights)) {
-                    hitFace = next;
-                    n = walk->normalAt(hitFace, weights);
+                    const uint32_t start = under[size_t(y - r0) * size_t(width) + size_t(x)];
+                    if (!both && start != UINT32_MAX && start != hitFace && start != next &&
+                        walk->holds(p, start, facing, weights)) {
+                        hitFace = start;
+                        n = walk->normalAt(hitFace, weights);
+                        return true;
+                    }
+                    uint32_t from = hitFace != UINT32_MAX ? hitFace : start;
+                    if (from == UINT32_MAX &&
+                        (from = grid->find(double(l0) * q[0] + double(l1) * q[1] + double(l2) * q[2])) == UINT32_MAX)
+                        return false;
+                    const SurfaceWalk::Hit hit = walk->project(p, from, facing, marks, 64);
+                    hitFace = hit.face;
+                    n = walk->normalAt(hit);
                     return true;
-                }
-                const uint32_t start = under[size_t(y - r0) * size_t(width) + size_t(x)];
-                if (!both && start != UINT32_MAX && start != hitFace && start != next &&
-                    walk->holds(p, start, facing, weights)) {
-                    hitFace = start;
-                    n = walk->normalAt(hitFace, weights);
-                    return true;
-                }
-                uint32_t from = hitFace != UINT32_MAX ? hitFace : start;
-                if (from == UINT32_MAX &&
-                    (from = grid->find(double(l0) * q[0] + double(l1) * q[1] + double(l2) * q[2])) == UINT32_MAX)
-                    return false;
-                const SurfaceWalk::Hit hit = walk->project(p, from, facing, marks, 64);
-                hitFace = hit.face;
-                n = walk->normalAt(hit);
-                return true;
-            };
-            // Rows outside the band belong to the bands that hold them.
-            auto visitRow = [&](int y, int cl, int cr, int zl, int zr) {
-                const uint32_t stateRow = uint32_t(y) * uint32_t(width),
-                               imageRow = uint32_t(height - 1 - y) * uint32_t(width);
-                const double py = y + 0.5 - q[0].y;
-                hitFace = rowFace;
-                bool first = true;
-                // The row's texels are gathered, the triangle's rows solved and written at once
-                // (its texels are distinct, one row each: a row reads only the states of its own
-                // texels, which no other row of the triangle writes, so the order of claims is
-                // kept).
-                const bool centres = zl <= zr;
-                const int from = centres ? std::min(cl, zl) : cl, to = centres ? std::max(cr, zr) : cr;
-                batch.startRow(stateRow, imageRow, from, to - from + 1);
-                auto visit = [&](int x, float l1, float l2, bool tried = false, bool both = false,
-                                 uint32_t next = UINT32_MAX) {
-                    glm::vec3 n(0.0f);
-                    if (!sourceNormal(x, y, l1, l2, n, tried, both, next))
-                        n = glm::vec3(0.0f);
-                    if (first)
-                        rowFace = hitFace, first = false;
-                    batch.set(x, l1, l2, n);
                 };
-                // Texels the triangle only overlaps, if no centre claimed them (no centre of this
-                // face lies among them, so their order among the centres keeps the order of
-                // claims): weights clamped onto it.
-                auto overlap = [&](int x) {
-                    if (states[stateRow + uint32_t(x)] != 0)
+                // Rows outside the band belong to the bands that hold them.
+                auto visitRow = [&](int y, int cl, int cr, int zl, int zr) {
+                    const uint32_t stateRow = uint32_t(y) * uint32_t(width),
+                                   imageRow = uint32_t(height - 1 - y) * uint32_t(width);
+                    const double py = y + 0.5 - q[0].y;
+                    hitFace = rowFace;
+                    bool first = true;
+                    // The row's texels are gathered, the triangle's rows solved and written at once
+                    // (its texels are distinct, one row each: a row reads only the states of its own
+                    // texels, which no other row of the triangle writes, so the order of claims is
+                    // kept).
+                    const bool centres = zl <= zr;
+                    const bool overlaps = centres ? cl < zl || cr > zr : cl <= cr;
+                    const uint32_t leftStart = hitFace;
+                    if (pass == 0 && !centres) {
+                        overlapRows.push_back({i, y, cl, cr, zl, zr, leftStart, leftStart});
                         return;
-                    const double px = x + 0.5 - q[0].x;
-                    float l1 = float(a1 * px + b1 * py), l2 = float(a2 * px + b2 * py), l0 = 1.0f - l1 - l2;
-                    l0 = std::max(l0, 0.0f), l1 = std::max(l1, 0.0f), l2 = std::max(l2, 0.0f);
-                    const float sum = l0 + l1 + l2;
-                    if (sum > 0)
-                        l1 /= sum, l2 /= sum;
-                    visit(x, l1, l2);
-                };
-                for (int x = cl; x <= (centres ? std::min(zl - 1, cr) : cr); ++x)
-                    overlap(x);
-                // Centres inside: the weights step along the row.
-                if (centres) {
-                    const double px = zl + 0.5 - q[0].x;
-                    double l1 = a1 * px + b1 * py, l2 = a2 * px + b2 * py;
-                    bool tried = false;          // texel x is known not to be on hitFace,
-                    uint32_t next = UINT32_MAX;  // and left it for this face
-                    for (int x = zl; x <= zr;) {
+                    }
+                    if (pass == 0)
+                        batch.startRow(stateRow, imageRow, zl, zr - zl + 1);
+                    auto visit = [&](int x, float l1, float l2, bool tried = false, bool both = false,
+                                     uint32_t next = UINT32_MAX) {
+                        glm::vec3 n(0.0f);
+                        if (!sourceNormal(x, y, l1, l2, n, tried, both, next))
+                            n = glm::vec3(0.0f);
+                        if (first)
+                            rowFace = hitFace, first = false;
+                        batch.set(x, l1, l2, n);
+                    };
+                    // Texels the triangle only overlaps, if no centre claimed them (no centre of this
+                    // face lies among them, so their order among the centres keeps the order of
+                    // claims): weights clamped onto it.
+                    auto overlap = [&](int x) {
+                        if (states[stateRow + uint32_t(x)] != 0)
+                            return;
+                        const double px = x + 0.5 - q[0].x;
+                        float l1 = float(a1 * px + b1 * py), l2 = float(a2 * px + b2 * py), l0 = 1.0f - l1 - l2;
+                        l0 = std::max(l0, 0.0f), l1 = std::max(l1, 0.0f), l2 = std::max(l2, 0.0f);
+                        const float sum = l0 + l1 + l2;
+                        if (sum > 0)
+                            l1 /= sum, l2 /= sum;
+                        visit(x, l1, l2);
+                    };
+                    if (pass == 1) {  // the overlapped texels left of the centres, then right of them
+                        const OverlapRow &row = overlapRows[nextOverlap++];
+                        const int leftEnd = centres ? std::min(zl - 1, cr) : cr, rightBegin = std::max(zr + 1, cl);
+                        hitFace = row.left;
+                        if (cl <= leftEnd) {
+                            batch.startRow(stateRow, imageRow, cl, leftEnd - cl + 1);
+                            for (int x = cl; x <= leftEnd; ++x)
+                                overlap(x);
+                        }
+                        hitFace = row.right;
+                        if (centres && rightBegin <= cr) {
+                            batch.startRow(stateRow, imageRow, rightBegin, cr - rightBegin + 1);
+                            for (int x = rightBegin; x <= cr; ++x)
+                                overlap(x);
+                        }
+                        return;
+                    }
+                    // Centres inside: the weights step along the row.
+                    if (centres) {
+                        const double px = zl + 0.5 - q[0].x;
+                        double l1 = a1 * px + b1 * py, l2 = a2 * px + b2 * py;
+                        bool tried = false;          // texel x is known not to be on hitFace,
+                        uint32_t next = UINT32_MAX;  // and left it for this face
+                        for (int x = zl; x <= zr;) {
 #if VOXELFAIR_SSE2
-                        // 4 texels at once (those past zr ignored) against the face of the texel
-                        // before them (the fast path), else, when the first is not on it, against
-                        // the face it left that one by, then the face under the first's UV, as
-                        // sourceNormal tries them: the texels up to the first that is not on the
-                        // face that holds the first are done.
-                        if (hitFace != UINT32_MAX) {
-                            // The weights of the 4 texels, stepped in doubles as one texel at a
-                            // time does it (l1 and l2 side by side), then rounded to float.
-                            __m128d m = _mm_set_pd(l2, l1);
-                            const __m128d step = _mm_set_pd(a2, a1);
-                            __m128 w[4];
-                            for (__m128 &wk : w)
-                                wk = _mm_cvtpd_ps(m), m = _mm_add_pd(m, step);
-                            const __m128 w01 = _mm_unpacklo_ps(w[0], w[1]), w23 = _mm_unpacklo_ps(w[2], w[3]);
-                            const __m128 L1 = _mm_movelh_ps(w01, w23), L2 = _mm_movehl_ps(w23, w01);
-                            __m128 weights[3];
-                            const int lanes = (1 << std::min(4, zr - x + 1)) - 1;
-                            int held = 0;
-                            if (!tried) {
-                                held = holdsQuad(*walk, hitFace, L1, L2, quadTarget, weights) & lanes;
-                                if ((held & 1) == 0)
-                                    next = acrossLane(*walk, hitFace, weights, 0);
-                            }
-                            if ((held & 1) == 0 && next != UINT32_MAX &&
-                                ((held = holdsQuad(*walk, next, L1, L2, quadTarget, weights) & lanes) & 1) != 0)
-                                hitFace = next;
-                            if ((held & 1) == 0) {
-                                const uint32_t start = under[size_t(y - r0) * size_t(width) + size_t(x)];
-                                if (start != UINT32_MAX && start != hitFace && start != next &&
-                                    ((held = holdsQuad(*walk, start, L1, L2, quadTarget, weights) & lanes) & 1) != 0)
-                                    hitFace = start;
-                            }
-                            if ((held & 1) != 0) {
-                                __m128 n[3];
-                                quadNormals(*walk, hitFace, weights, n);
-                                if (first)
-                                    rowFace = hitFace, first = false;
-                                int k = 0;  // the lanes held, up to the first that is not
-                                while (k < 4 && (held >> k & 1) != 0)
-                                    ++k;
-                                batch.setQuad(x, L1, L2, n, k);
-                                if (k < 4)  // lane k is not on hitFace: the face it left it for
-                                    next = acrossLane(*walk, hitFace, weights, k);
-                                x += k;
-                                if (k == 4)
-                                    l1 = _mm_cvtsd_f64(m), l2 = _mm_cvtsd_f64(_mm_unpackhi_pd(m, m));
-                                else
-                                    for (int j = 0; j < k; ++j)
-                                        l1 += a1, l2 += a2;
-                                tried = k < 4;
+                            // 4 texels at once (those past zr ignored) against the face of the texel
+                            // before them (the fast path), else, when the first is not on it, against
+                            // the face it left that one by, then the face under the first's UV, as
+                            // sourceNormal tries them: the texels up to the first that is not on the
+                            // face that holds the first are done.
+                            if (hitFace != UINT32_MAX) {
+                                // The weights of the 4 texels, stepped in doubles as one texel at a
+                                // time does it (l1 and l2 side by side), then rounded to float.
+                                __m128d m = _mm_set_pd(l2, l1);
+                                const __m128d step = _mm_set_pd(a2, a1);
+                                __m128 w[4];
+                                for (__m128 &wk : w)
+                                    wk = _mm_cvtpd_ps(m), m = _mm_add_pd(m, step);
+                                const __m128 w01 = _mm_unpacklo_ps(w[0], w[1]), w23 = _mm_unpacklo_ps(w[2], w[3]);
+                                const __m128 L1 = _mm_movelh_ps(w01, w23), L2 = _mm_movehl_ps(w23, w01);
+                                __m128 weights[3];
+                                const int lanes = (1 << std::min(4, zr - x + 1)) - 1;
+                                int held = 0;
+                                if (!tried) {
+                                    held = holdsQuad(*walk, hitFace, L1, L2, quadTarget, weights) & lanes;
+                                    if ((held & 1) == 0)
+                                        next = acrossLane(*walk, hitFace, weights, 0);
+                                }
+                                if ((held & 1) == 0 && next != UINT32_MAX &&
+                                    ((held = holdsQuad(*walk, next, L1, L2, quadTarget, weights) & lanes) & 1) != 0)
+                                    hitFace = next;
+                                if ((held & 1) == 0) {
+                                    const uint32_t start = under[size_t(y - r0) * size_t(width) + size_t(x)];
+                                    if (start != UINT32_MAX && start != hitFace && start != next &&
+                                        ((held = holdsQuad(*walk, start, L1, L2, quadTarget, weights) & lanes) & 1) !=
+                                            0)
+                                        hitFace = start;
+                                }
+                                if ((held & 1) != 0) {
+                                    __m128 n[3];
+                                    quadNormals(*walk, hitFace, weights, n);
+                                    if (first)
+                                        rowFace = hitFace, first = false;
+                                    int k = 0;  // the lanes held, up to the first that is not
+                                    while (k < 4 && (held >> k & 1) != 0)
+                                        ++k;
+                                    batch.setQuad(x, L1, L2, n, k);
+                                    if (k < 4)  // lane k is not on hitFace: the face it left it for
+                                        next = acrossLane(*walk, hitFace, weights, k);
+                                    x += k;
+                                    if (k == 4)
+                                        l1 = _mm_cvtsd_f64(m), l2 = _mm_cvtsd_f64(_mm_unpackhi_pd(m, m));
+                                    else
+                                        for (int j = 0; j < k; ++j)
+                                            l1 += a1, l2 += a2;
+                                    tried = k < 4;
+                                    continue;
+                                }
+                                // Neither: the walk.
+                                visit(x, _mm_cvtss_f32(L1), _mm_cvtss_f32(L2), true, true);
+                                ++x, l1 += a1, l2 += a2;
+                                tried = false;
                                 continue;
                             }
-                            // Neither: the walk.
-                            visit(x, _mm_cvtss_f32(L1), _mm_cvtss_f32(L2), true, true);
+#endif
+                            visit(x, float(l1), float(l2), tried, false, next);
                             ++x, l1 += a1, l2 += a2;
                             tried = false;
-                            continue;
                         }
-#endif
-                        visit(x, float(l1), float(l2), tried, false, next);
-                        ++x, l1 += a1, l2 += a2;
-                        tried = false;
+                        if (overlaps)
+                            overlapRows.push_back({i, y, cl, cr, zl, zr, leftStart, hitFace});
                     }
-                    for (int x = std::max(zr + 1, cl); x <= cr; ++x)
-                        overlap(x);
+                };
+                batch.clear();
+                if (pass == 0) {
+                    rasterRows(q[0], q[1], q[2], kMargin, width, height, visitRow, r0, r1 - 1);
+                } else {
+                    for (; nextOverlap < overlapRows.size() && overlapRows[nextOverlap].face == i;) {
+                        const OverlapRow &row = overlapRows[nextOverlap];
+                        hitFace = rowFace = row.left;
+                        visitRow(row.y, row.cl, row.cr, row.zl, row.zr);
+                    }
                 }
-            };
-            batch.clear();
-            rasterRows(q[0], q[1], q[2], kMargin, width, height, visitRow, r0, r1 - 1);
-            writeTexelBatch(targetFrame, batch, states, rgba);
+                writeTexelBatch(targetFrame, batch, states, rgba);
+            }
         }
 
         uint32_t fromSource = 0, painted = 0;  // local: the bands' counters share cache lines
