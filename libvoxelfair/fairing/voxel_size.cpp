@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -49,21 +50,45 @@ float detectVoxelSize(const PolygonMesh &mesh, float expected) {
             return expected;
     }
 
-    std::sort(lengths.begin(), lengths.end());
-    size_t bestFirst = 0, bestCount = 0;
-    for (size_t first = 0; first < lengths.size();) {
-        size_t last = first;
-        while (last < lengths.size() && lengths[last].first == lengths[first].first)
-            ++last;
-        if (last - first > bestCount) {
-            bestFirst = first;
-            bestCount = last - first;
+    // The most common bin (the lowest among equals), counted in an array over the bins' range
+    // when that is small (it is: a mesh's lengths span a few binades), else by sorting the bins.
+    long least = lengths[0].first, most = least;
+    for (const auto &l : lengths)
+        least = std::min(least, l.first), most = std::max(most, l.first);
+    long bestBin = least;
+    size_t bestCount = 0;
+    if (most - least < long(4 * lengths.size()) + 1024) {
+        std::vector<uint32_t> counts(size_t(most - least) + 1, 0);
+        for (const auto &l : lengths)
+            ++counts[size_t(l.first - least)];
+        for (size_t b = 0; b < counts.size(); ++b)
+            if (counts[b] > bestCount) {
+                bestCount = counts[b];
+                bestBin = least + long(b);
+            }
+    } else {
+        std::vector<long> bins(lengths.size());
+        for (size_t i = 0; i < lengths.size(); ++i)
+            bins[i] = lengths[i].first;
+        std::sort(bins.begin(), bins.end());
+        for (size_t first = 0; first < bins.size();) {
+            size_t last = first;
+            while (last < bins.size() && bins[last] == bins[first])
+                ++last;
+            if (last - first > bestCount) {
+                bestBin = bins[first];
+                bestCount = last - first;
+            }
+            first = last;
         }
-        first = last;
     }
+    // The bin's mean length. Its lengths lie within 0.1% of each other (one binade or two
+    // adjacent ones) and are far fewer than 2^28 floats, so their sum in double is exact in any
+    // order.
     double sum = 0.0;
-    for (size_t i = bestFirst; i < bestFirst + bestCount; ++i)
-        sum += lengths[i].second;
+    for (const auto &l : lengths)
+        if (l.first == bestBin)
+            sum += l.second;
     return float(sum / double(bestCount));
 }
 

@@ -56,9 +56,9 @@ std::map<Cell, Rgb3> worldVoxels(const fs::path &file, size_t &instances, size_t
                         // The voxel's centre in world space, floored to its cell.
                         const glm::vec4 p = part.toModel * glm::vec4(x + 0.5f, y + 0.5f, z + 0.5f, 1.0f);
                         const Cell cell{int(std::floor(p.x)), int(std::floor(p.y)), int(std::floor(p.z))};
-                        const Rgb colour = scene.palette.colours[v.voxels[v.runs[r].firstVoxel + uint32_t(z) -
-                                                                             v.runs[r].zBegin]
-                                                                     .colour];
+                        const Rgb colour =
+                            scene.palette
+                                .colours[v.voxels[v.runs[r].firstVoxel + uint32_t(z) - v.runs[r].zBegin].colour];
                         const Rgb3 rgb{colour.r, colour.g, colour.b};
                         const auto [it, added] = cells.emplace(cell, rgb);
                         if (!added && it->second != rgb)
@@ -106,8 +106,8 @@ TEST(VoxGoxel, GoxelsExportOfEverySharedFileHoldsTheVoxelsWeShow) {
             // Goxel 0.11 turns each model into one layer placed once: a model shown several
             // times (8ontop: 72 instances of 8 models, 8946 voxels shown; an independent reading,
             // vox_shared_models_test, agrees with ours) comes out once.
-            std::printf("%-16s %zu instances of %zu models: Goxel shows each model once, not compared\n",
-                        name.c_str(), ourInstances, ourModels);
+            std::printf("%-16s %zu instances of %zu models: Goxel shows each model once, not compared\n", name.c_str(),
+                        ourInstances, ourModels);
             continue;
         }
         const fs::path exported = out / (name + ".vox");
