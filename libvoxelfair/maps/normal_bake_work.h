@@ -180,8 +180,12 @@ NormalMap bakeNormalMapWork(const NormalBakeMesh &source, const NormalBakeMesh &
                 // Only the rows with an overlapped texel no centre claimed.
                 auto unclaimed = [&](const OverlapRow &row) {
                     const uint8_t *const s = states + size_t(row.y) * size_t(width);
-                    for (int x = row.cl; x <= row.cr; ++x)
-                        if ((x < row.zl || x > row.zr) && s[x] == 0)
+                    const bool centres = row.zl <= row.zr;
+                    for (int x = row.cl; x <= (centres ? std::min(row.zl - 1, row.cr) : row.cr); ++x)
+                        if (s[x] == 0)
+                            return true;
+                    for (int x = std::max(row.zr + 1, row.cl); centres && x <= row.cr; ++x)
+                        if (s[x] == 0)
                             return true;
                     return false;
                 };
