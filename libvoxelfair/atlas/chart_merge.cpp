@@ -238,6 +238,11 @@ size_t mergeSmallCharts(const AtlasMesh &mesh, const uint32_t *opposite, const C
 
     // The charts again, emptied ones left out, each re-boxed to the origin.
     AtlasCharts out;
+    out.chartAxis.reserve(chartCount - merged);
+    out.chartFirstFace.reserve(chartCount - merged + 1);
+    out.chartSize.reserve(chartCount - merged);
+    out.chartFaces.reserve(faceCount);
+    out.wedgeUv.reserve(3 * faceCount);
     std::vector<uint32_t> renumber(chartCount, kNone);
     for (size_t c = 0; c < chartCount; ++c) {
         if (count[c] == 0)

@@ -4,10 +4,12 @@
 #include "atlas/pack_tight.h"
 #include "atlas/texel_raster.h"
 #include "base/error.h"
+#include "base/parallel_bands.h"
 
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace voxelfair {
 
@@ -16,6 +18,9 @@ const char *toString(PackMode mode) { return mode == PackMode::Paper ? "paper" :
 namespace {
 
 constexpr int kMaxSide = 16384;  // the packers keep texel rows and columns in int16
+
+// Fewer faces than this get their final UVs on one thread: starting threads would cost more.
+constexpr size_t kLeastParallelFaces = 4096;
 
 // Charts of at least this many blocks (4 x 4) get a bitmap (chart_bitmaps.h) and are packed by
 // their shape, not their box: on legs 64 -> 16 halves the texture (2048^2 -> 2048 x 1024).
@@ -355,34 +360,47 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
     out.width = out.size;
     out.height = height;
 
-    // Final UVs: chart texels -> turned mask -> texture, over the side.
+    // Final UVs: chart texels -> turned mask -> texture, over the side. A sliver thinner than
+    // float precision can come out flat or flipped; it gets a tiny right triangle (1/64 texel) at
+    // its first corner so every face keeps a positive UV area. Each face's UVs depend on its
+    // chart alone: runs of charts of about equal faces on up to `threads` threads.
     out.placements = packing.placements;
     out.wedgeUv.resize(charts.wedgeUv.size());
     const glm::dvec2 extent(out.width, out.height);
-    for (size_t c = 0; c < charts.chartCount(); ++c) {
-        const ChartMask &m = packing.packed().charts[c];
-        const int b = packing.block;  // the packed mask's size in texels: even with blocks
-        const int maskWidth = b * m.width, maskHeight = b * m.height;
-        const ChartPlacement &p = packing.placements[c];
-        for (uint32_t i = charts.chartFirstFace[c]; i < charts.chartFirstFace[c + 1]; ++i) {
-            const uint32_t f = charts.chartFaces[i];
-            for (int k = 0; k < 3; ++k) {
-                const glm::dvec2 q = glm::dvec2(charts.wedgeUv[3 * size_t(i) + k]) * m.scale + m.offset;
-                out.wedgeUv[3 * f + k] =
-                    glm::vec2((turnInMask(q, maskWidth, maskHeight, p.quarterTurns) + glm::dvec2(p.x, p.y)) / extent);
+    const size_t chartCount = charts.chartCount(), faceCount = charts.faceCount();
+    const int workers = faceCount >= kLeastParallelFaces ? bandThreads(options.threads, chartCount) : 1;
+    const size_t bands = workers > 1 ? std::min<size_t>(4 * size_t(workers), chartCount) : 1;
+    std::vector<size_t> from(bands + 1, chartCount), nudged(bands, 0);
+    from[0] = 0;
+    for (size_t band = 1, c = 0; band < bands; ++band) {
+        while (c < chartCount && charts.chartFirstFace[c] < faceCount * band / bands)
+            ++c;
+        from[band] = c;
+    }
+    runBands(bands, workers, [&](size_t band) {
+        for (size_t c = from[band]; c < from[band + 1]; ++c) {
+            const ChartMask &m = packing.packed().charts[c];
+            const int b = packing.block;  // the packed mask's size in texels: even with blocks
+            const int maskWidth = b * m.width, maskHeight = b * m.height;
+            const ChartPlacement &p = packing.placements[c];
+            for (uint32_t i = charts.chartFirstFace[c]; i < charts.chartFirstFace[c + 1]; ++i) {
+                const uint32_t f = charts.chartFaces[i];
+                glm::vec2 *uv = &out.wedgeUv[3 * size_t(f)];
+                for (int k = 0; k < 3; ++k) {
+                    const glm::dvec2 q = glm::dvec2(charts.wedgeUv[3 * size_t(i) + k]) * m.scale + m.offset;
+                    uv[k] = glm::vec2((turnInMask(q, maskWidth, maskHeight, p.quarterTurns) + glm::dvec2(p.x, p.y)) /
+                                      extent);
+                }
+                if (doubleArea(glm::dvec2(uv[0]) * extent, glm::dvec2(uv[1]) * extent, glm::dvec2(uv[2]) * extent) > 0)
+                    continue;
+                uv[1] = uv[0] + glm::vec2(float(1.0 / 64 / extent.x), 0);
+                uv[2] = uv[0] + glm::vec2(0, float(1.0 / 64 / extent.y));
+                ++nudged[band];
             }
         }
-    }
-    // A sliver thinner than float precision can come out flat or flipped; give it a tiny
-    // right triangle (1/64 texel) at its first corner so every face keeps a positive UV area.
-    for (size_t f = 0; f < charts.faceCount(); ++f) {
-        glm::vec2 *uv = &out.wedgeUv[3 * f];
-        if (doubleArea(glm::dvec2(uv[0]) * extent, glm::dvec2(uv[1]) * extent, glm::dvec2(uv[2]) * extent) > 0)
-            continue;
-        uv[1] = uv[0] + glm::vec2(float(1.0 / 64 / extent.x), 0);
-        uv[2] = uv[0] + glm::vec2(0, float(1.0 / 64 / extent.y));
-        ++out.nudgedFaces;
-    }
+    });
+    for (size_t n : nudged)
+        out.nudgedFaces += n;
     return out;
 }
 

@@ -97,8 +97,8 @@ struct PackOptions {
     bool mipBlocks = true;
     // Tight mode: also try each chart turned by 90, 180 and 270 degrees.
     bool allowRotation = true;
-    // Threads rasterising the charts and searching the large charts' turns (0: one per hardware
-    // thread); the layout is the same for any count.
+    // Threads rasterising the charts, searching the large charts' turns and writing the final
+    // UVs (0: one per hardware thread); the layout is the same for any count.
     int threads = 0;
 };
 
