@@ -35,16 +35,31 @@ constexpr size_t kLeastParallelFaces = 4096;
 
 // The image being baked: RGBA rows from the top, as AtlasTexture::rgba, and per texel whether
 // it is painted (a face's texel or a dilation ring's).
+//
+// Its memory is not written when made: clear() sets layout rows rowFrom..rowTo to the background,
+// unpainted, so that each band of the bake clears its own rows on the thread that paints them
+// (the pages' first touch there, once, in parallel: 20 MB for the tank at 8 texels per voxel).
+// Every row must be cleared before anything reads it.
 struct Canvas {
     int width, height;
-    std::vector<uint8_t> &rgba;
-    std::vector<uint8_t> filled;
-    Canvas(int width, int height, glm::u8vec4 background, std::vector<uint8_t> &rgba)
-        : width(width), height(height), rgba(rgba), filled(size_t(width) * size_t(height), 0) {
-        rgba.assign(filled.size() * 4, 0);
-        if (background != glm::u8vec4(0))
-            for (size_t i = 0; i < filled.size(); ++i)
+    glm::u8vec4 background;
+    ByteBuffer &rgba;
+    ByteBuffer filled;
+    Canvas(int width, int height, glm::u8vec4 background, ByteBuffer &rgba)
+        : width(width), height(height), background(background), rgba(rgba) {
+        const size_t texels = size_t(width) * size_t(height);
+        rgba.resize(4 * texels);  // written by clear()
+        filled.resize(texels);
+    }
+    void clear(int rowFrom, int rowTo) {
+        const size_t from = index(0, rowTo), to = index(0, rowFrom) + size_t(width);
+        std::memset(filled.data() + from, 0, to - from);
+        if (background == glm::u8vec4(0)) {
+            std::memset(rgba.data() + 4 * from, 0, 4 * (to - from));
+        } else {
+            for (size_t i = from; i < to; ++i)
                 std::memcpy(&rgba[4 * i], &background, 4);
+        }
     }
     // Layout texel (x, y), y up.
     size_t index(int x, int y) const { return size_t(height - 1 - y) * size_t(width) + size_t(x); }
@@ -79,7 +94,7 @@ BakeSource chooseSource(const AtlasMesh &mesh, BakeSource wanted, std::string &n
 // neighbours of the ring before.
 void dilate(Canvas &canvas, int rings, int threads) {
     const int width = canvas.width, height = canvas.height;
-    std::vector<uint8_t> &filled = canvas.filled;  // 1 filled, 2 in the ring being found
+    ByteBuffer &filled = canvas.filled;  // 1 filled, 2 in the ring being found
     std::vector<uint32_t> frontier, next;
     if (rings <= 0)
         return;
@@ -340,6 +355,7 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
         const int rowFrom = int(size_t(height) * band / bands);
         const int rowTo = int(size_t(height) * (band + 1) / bands) - 1;
         const size_t noteFrom = mesh.faceCount * band / bands, noteTo = mesh.faceCount * (band + 1) / bands;
+        canvas.clear(rowFrom, rowTo);  // the bands' rows cover the image
         // A face reaches rows floor(min y - 1 - margin) to floor(max y + margin) (margin < 0).
         auto outside = [&](const glm::dvec2 *q) {
             return bands > 1 && (std::max({q[0].y, q[1].y, q[2].y}) < rowFrom - 1.0 ||

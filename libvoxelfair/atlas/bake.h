@@ -22,6 +22,7 @@
 
 #include "atlas/atlas_mesh.h"
 #include "atlas/packing.h"
+#include "base/huge_page_allocator.h"
 
 #include <cstdint>
 #include <string>
@@ -54,8 +55,9 @@ struct AtlasTexture {
     int size = 0;  // the width, kept from when textures were always square
     int width = 0, height = 0;
     // width x height RGBA8 texels, rows from the top of the image (v = 1) down, as PNG and QImage
-    // store them: texel (x, y) of the layout (y up) is at row height - 1 - y.
-    std::vector<uint8_t> rgba;
+    // store them: texel (x, y) of the layout (y up) is at row height - 1 - y. A ByteBuffer: the
+    // bake writes every byte, band by band on the threads that paint them, never zeroing it first.
+    ByteBuffer rgba;
     BakeSource source = BakeSource::FaceColours;  // what was actually baked
     int dilation = 0;                             // rings actually filled
     std::string note;                             // why the source differs from the request, if it does

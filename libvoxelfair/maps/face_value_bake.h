@@ -13,6 +13,7 @@
 // a size outside 1..16384 or a negative dilation.
 #pragma once
 
+#include "base/huge_page_allocator.h"
 #include "mesh/triangle_mesh.h"
 
 #include <cstddef>
@@ -34,7 +35,7 @@ struct FaceValueImage {
     int width = 0, height = 0;
     // width x height RGBA8, rows from the top (v = 1) down as PNG stores them, like AtlasTexture;
     // alpha 255 on charts and their rings, 0 elsewhere.
-    std::vector<uint8_t> rgba;
+    ByteBuffer rgba;
 
     // The texel at layout coordinates (x, y), y up.
     glm::u8vec4 texel(int x, int y) const {
