@@ -62,6 +62,16 @@ public:
         std::vector<uint32_t> stamp;
         uint32_t generation = 0;
     };
+    // The corner of the most negative weight (the first among equals): it faces the edge
+    // (k + 1, k + 2), half-edge (k + 1) % 3, that a walk leaves the face by.
+    static int mostNegative(const glm::vec3 &w) {
+        int k = 0;
+        if (w[1] < w[k])
+            k = 1;
+        if (w[2] < w[k])
+            k = 2;
+        return k;
+    }
     // `start` must be a face index; at most `maxSteps` moves. Inline: the bakers call it per texel.
     Hit project(const glm::vec3 &p, uint32_t start, const glm::vec3 &facing, Marks &marks, int maxSteps = 16) const {
         uint32_t face = start, previous = UINT32_MAX;
@@ -70,12 +80,7 @@ public:
             const glm::vec3 d = p - f.origin;
             const float w1 = glm::dot(d, f.dual1), w2 = glm::dot(d, f.dual2);
             const glm::vec3 w(1.0f - w1 - w2, w1, w2);
-            // The most negative weight's corner k faces the edge (k + 1, k + 2) = half-edge (k + 1) % 3.
-            int k = 0;
-            if (w[1] < w[k])
-                k = 1;
-            if (w[2] < w[k])
-                k = 2;
+            const int k = mostNegative(w);
             if (w[k] >= 0.0f) {
                 // Inside, and near the plane compared with the triangle's size: the projection is
                 // the closest point, or close to it.
@@ -96,11 +101,7 @@ public:
     // lies past: across the edge facing the most negative weight, project()'s first step;
     // UINT32_MAX where no weight is negative or that edge is a border or non-manifold.
     uint32_t across(uint32_t face, const glm::vec3 &w) const {
-        int k = 0;
-        if (w[1] < w[k])
-            k = 1;
-        if (w[2] < w[k])
-            k = 2;
+        const int k = mostNegative(w);
         if (w[k] >= 0.0f)
             return UINT32_MAX;
         const uint32_t h = faces_[face].opposite[(k + 1) % 3];
