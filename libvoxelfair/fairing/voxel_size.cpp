@@ -50,38 +50,22 @@ float detectVoxelSize(const PolygonMesh &mesh, float expected) {
             return expected;
     }
 
-    // The most common bin (the lowest among equals), counted in an array over the bins' range
-    // when that is small (it is: a mesh's lengths span a few binades), else by sorting the bins.
+    // The most common bin (the lowest among equals), counted in an array over the bins' range:
+    // finite positive floats span ln(FLT_MAX / FLT_TRUE_MIN) / ln(1.001), about 192k bins, so the
+    // array stays under 1 MB whatever the lengths (a mesh's span a few binades).
     long least = lengths[0].first, most = least;
     for (const auto &l : lengths)
         least = std::min(least, l.first), most = std::max(most, l.first);
+    std::vector<uint32_t> counts(size_t(most - least) + 1, 0);
+    for (const auto &l : lengths)
+        ++counts[size_t(l.first - least)];
     long bestBin = least;
     size_t bestCount = 0;
-    if (most - least < long(4 * lengths.size()) + 1024) {
-        std::vector<uint32_t> counts(size_t(most - least) + 1, 0);
-        for (const auto &l : lengths)
-            ++counts[size_t(l.first - least)];
-        for (size_t b = 0; b < counts.size(); ++b)
-            if (counts[b] > bestCount) {
-                bestCount = counts[b];
-                bestBin = least + long(b);
-            }
-    } else {
-        std::vector<long> bins(lengths.size());
-        for (size_t i = 0; i < lengths.size(); ++i)
-            bins[i] = lengths[i].first;
-        std::sort(bins.begin(), bins.end());
-        for (size_t first = 0; first < bins.size();) {
-            size_t last = first;
-            while (last < bins.size() && bins[last] == bins[first])
-                ++last;
-            if (last - first > bestCount) {
-                bestBin = bins[first];
-                bestCount = last - first;
-            }
-            first = last;
+    for (size_t b = 0; b < counts.size(); ++b)
+        if (counts[b] > bestCount) {
+            bestCount = counts[b];
+            bestBin = least + long(b);
         }
-    }
     // The bin's mean length. Its lengths lie within 0.1% of each other (one binade or two
     // adjacent ones) and are far fewer than 2^28 floats, so their sum in double is exact in any
     // order.
