@@ -321,12 +321,9 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
         if (box.x0 > box.x1)
             return;
         const int y0 = std::max(rowFrom, box.y0), y1 = std::min(rowTo, box.y1);
-        int first = y1 + 1, last = y0 - 1;  // the rows of the box with an empty texel
-        for (int y = y0; y <= y1; ++y)
-            if (!allOnes(filled + canvas.index(box.x0, y), size_t(box.x1) - size_t(box.x0) + 1)) {
-                first = std::min(first, y);
-                last = y;
-            }
+        int first = 0, last = 0;  // the rows of the box with an empty texel
+        unsetRowRange([&](int y) { return filled + canvas.index(box.x0, y); }, size_t(box.x1) - size_t(box.x0) + 1, y0,
+                      y1, first, last);
         if (first > last)
             return;
         rowFrom = first, rowTo = last;

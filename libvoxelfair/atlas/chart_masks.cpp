@@ -58,18 +58,6 @@ struct SpanRecorder {
     }
 };
 
-// The rows of `box` in `bits` (rows of `width`) with a block not set: from `first` to `last`
-// (none: first > last).
-void unsetRows(const uint8_t *bits, int width, const raster_detail::TexelBox &box, int &first, int &last) {
-    const size_t length = size_t(box.x1) - size_t(box.x0) + 1;
-    first = box.y0;
-    while (first <= box.y1 && allOnes(bits + size_t(first) * size_t(width) + size_t(box.x0), length))
-        ++first;
-    last = box.y1;
-    while (last > first && allOnes(bits + size_t(last) * size_t(width) + size_t(box.x0), length))
-        --last;
-}
-
 // Chart c straight onto 2 x 2 blocks: the coarse mask that rasterising its texels (on the w x h
 // canvas, at `origin`), growing them by `padding` and coarsening would give. The texel mask's
 // box is the footprint's, known from the triangles' extents (each triangle's first and last
@@ -129,7 +117,8 @@ bool rasterizeBlocks(const AtlasCharts &charts, size_t c, double origin, int w, 
             continue;
         int first = box.y0, last = box.y1;
         if (any)
-            unsetRows(bits, width, box, first, last);
+            unsetRowRange([&](int y) { return bits + size_t(y) * size_t(width) + size_t(box.x0); },
+                          size_t(box.x1) - size_t(box.x0) + 1, box.y0, box.y1, first, last);
         if (first > last)
             continue;
         rasterConservativeSpans(

@@ -3,7 +3,7 @@
 // tank atlas, 0.6 million spans per bake and about 1 million per chart bitmap pass). Short
 // runs take two overlapping stores of 1, 2, 4 or 8 bytes, the technique of libc memsets'
 // own small-size paths; longer ones still go to memset. And the test whether such a run is
-// whole (every byte 1), eight bytes at a time.
+// whole (every byte 1), eight bytes at a time, and the rows of a box that are not.
 #pragma once
 
 #include <cstddef>
@@ -61,6 +61,19 @@ inline bool allOnes(const uint8_t *p, size_t n) {
         return a == 0x0101u && b == 0x0101u;
     }
     return n == 0 || p[0] == 1;
+}
+
+// The first and last of rows y0..y1 whose `length` flags from rowAt(y) are not all 1: first >
+// last when every row is whole. Rows known to be whole add nothing to a raster of flags, so
+// rasterisers skip to the rows between (the chart masks' blocks, the crisp bake's overlaps).
+template <class RowAt>
+inline void unsetRowRange(RowAt &&rowAt, size_t length, int y0, int y1, int &first, int &last) {
+    first = y0;
+    while (first <= y1 && allOnes(rowAt(first), length))
+        ++first;
+    last = y1;
+    while (last > first && allOnes(rowAt(last), length))
+        --last;
 }
 
 }  // namespace voxelfair
