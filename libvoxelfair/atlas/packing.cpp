@@ -154,7 +154,7 @@ double fillScale(const Packing &packing, int side, int height, double efficiency
 
 bool densestFit(const AtlasCharts &charts, const PackOptions &o, int padding, int side, int height, double ceiling,
                 Packing &best, double &density, size_t &attempts, double known = 0, double knownFilled = 0,
-                double knownReached = 0) {
+                double knownReached = 0, double start = 0) {
     // Upper bound: the charts' projected area cannot exceed the texture, nor a chart its side.
     double area = 0, longest = 0;
     for (size_t c = 0; c < charts.chartCount(); ++c) {
@@ -185,6 +185,8 @@ bool densestFit(const AtlasCharts &charts, const PackOptions &o, int padding, in
             return true;
         }
         d = std::clamp(d, known * 1.001, miss / 1.001);
+    } else if (start > 0 && o.mode == PackMode::Tight) {
+        d = std::clamp(start, floor, miss / 1.001);
     }
     Packing trial;
     trial.block = best.block;
@@ -281,7 +283,7 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
         if (options.mode == PackMode::Paper)
             height = out.size;  // the paper's square
         if (!densestFit(charts, options, padding, out.size, height, INFINITY, packing, out.texelsPerUnit,
-                        out.packAttempts))
+                        out.packAttempts, 0, 0, 0, options.startDensity))
             throw OptionError("the charts do not fit a " + std::to_string(out.size) + " x " + std::to_string(height) +
                               " texture at any density");
     } else {
@@ -350,7 +352,7 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
             out.size = height = maxSide;
             out.densityReduced = true;
             if (!densestFit(charts, options, padding, out.size, height, options.texelsPerUnit, packing,
-                            out.texelsPerUnit, out.packAttempts))
+                            out.texelsPerUnit, out.packAttempts, 0, 0, 0, options.startDensity))
                 throw OptionError("the charts do not fit a " + std::to_string(out.size) + " texture at any density");
             out.note = "texels per unit lowered from " + std::to_string(options.texelsPerUnit) + " to " +
                        std::to_string(out.texelsPerUnit) + " to fit " + std::to_string(out.size) + " x " +

@@ -56,7 +56,8 @@ TextureAtlas buildTextureAtlas(const AtlasMesh &mesh, const AtlasOptions &option
     // density found, a little below it since the separated charts take room, and pack again.
     // Separating for a density serves every higher one. Separated charts lower the density, which
     // can crowd more faces: with alwaysCrisp they are separated too, round after round; without
-    // it, if that ends over the budget, the first packing is kept (denser).
+    // it, if that ends over the budget, the first packing is kept (denser). Each repacking's
+    // density search starts at the density the round before found (PackOptions::startDensity).
     AtlasCharts firstCharts;
     AtlasLayout firstLayout;
     CrowdedFaces firstCrowded;
@@ -76,6 +77,7 @@ TextureAtlas buildTextureAtlas(const AtlasMesh &mesh, const AtlasOptions &option
             firstCrowded = atlas.crowded;
         if (!separated)
             break;  // nothing more to separate: the layout stands
+        pack.startDensity = found;
         packed = repack(atlas.charts, pack, atlas.layout);
     }
     atlas.crispGuaranteed = crisp && packed && !atlas.crowded.overBudget() && atlas.layout.texelsPerUnit >= separatedAt;

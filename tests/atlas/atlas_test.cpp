@@ -874,3 +874,41 @@ TEST(BadInput, NonManifoldEdgesAreChartBorders) {
     EXPECT_EQ(charts.nonManifoldEdges, 1u);
     expectValidAtlas(mesh, charts, packCharts(charts), kMergeCone);
 }
+
+// PackOptions::startDensity: the separation rounds restart the density search next to the last
+// answer. Wherever it starts, the search ends at a fitting layout near the density the search
+// from the area bound finds (both stop within 0.5% of a miss), and a start just above the answer
+// costs fewer packings (here 51 against 95 in all). Fixed sizes and densities lowered to fit the largest texture, on a
+// family of smoothed voxel shapes.
+TEST(Packing, AStartDensityNearTheAnswerSavesPackings) {
+    const std::vector<TestMesh> shapes = {smoothed(voxelSphere(9)), smoothed(voxelTorus(10, 4)),
+                                          smoothed(voxelBlob(8, 3)), smoothed(voxelBlob(7, 11)),
+                                          smoothed(voxelBox(9, 5, 3))};
+    size_t fromScratch = 0, nearStart = 0;
+    for (const TestMesh &shape : shapes) {
+        const AtlasCharts charts = computeCharts(shape.view());
+        PackOptions fixed, reduced;
+        fixed.textureSize = 256;
+        reduced.texelsPerUnit = 64.0f;
+        reduced.maxTextureSize = 256;
+        for (const PackOptions &base : {fixed, reduced}) {
+            const AtlasLayout scratch = packCharts(charts, base);
+            ASSERT_EQ(scratch.densityReduced, base.textureSize == 0) << shape.name;
+            for (double factor : {0.6, 0.98, 1.002, 1.05, 1.6}) {
+                PackOptions started = base;
+                started.startDensity = scratch.texelsPerUnit * factor;
+                const AtlasLayout layout = packCharts(charts, started);
+                SCOPED_TRACE(shape.name + " start x" + std::to_string(factor));
+                EXPECT_EQ(measureAtlas(shape.view(), charts, layout).overlappingChartTexels, 0u);
+                // 0.2% on the round shapes; the box's six charts fit at some densities and not at
+                // slightly lower ones (a packer is not monotone in the density), 2.4% there.
+                EXPECT_NEAR(layout.texelsPerUnit, scratch.texelsPerUnit, 0.03 * scratch.texelsPerUnit);
+                for (const glm::vec2 &uv : layout.wedgeUv)
+                    ASSERT_TRUE(uv.x >= 0 && uv.x <= 1 && uv.y >= 0 && uv.y <= 1);
+                if (factor == 1.002)
+                    fromScratch += scratch.packAttempts, nearStart += layout.packAttempts;
+            }
+        }
+    }
+    EXPECT_LT(nearStart, fromScratch);
+}
