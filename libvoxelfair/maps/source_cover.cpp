@@ -27,6 +27,11 @@ constexpr float kOnEdge = 1e-5f;  // a weight this far below 0 still inside
 
 // The target's faces by the grid cells their UV boxes meet, and the face holding a UV point.
 class TargetUvGrid {
+    // The cell of a finite texel-space coordinate (clamped to the side first: no overflow).
+    static int cellOf(double t, int side, int cells) {
+        return std::clamp(int(std::clamp(t, 0.0, double(side))) / kCell, 0, cells - 1);
+    }
+
 public:
     TargetUvGrid(const NormalBakeMesh &target, int width, int height)
         : target_(target), width_(width), height_(height), cellsX_((width + kCell - 1) / kCell),
@@ -41,10 +46,8 @@ public:
                 b[0] = 1, b[1] = 0, b[2] = 1, b[3] = 0;
                 continue;
             }
-            b[0] = std::clamp(int(std::floor(lo.x)) / kCell, 0, cellsX_ - 1);
-            b[1] = std::clamp(int(std::floor(hi.x)) / kCell, 0, cellsX_ - 1);
-            b[2] = std::clamp(int(std::floor(lo.y)) / kCell, 0, cellsY_ - 1);
-            b[3] = std::clamp(int(std::floor(hi.y)) / kCell, 0, cellsY_ - 1);
+            b[0] = cellOf(lo.x, width, cellsX_), b[1] = cellOf(hi.x, width, cellsX_);
+            b[2] = cellOf(lo.y, height, cellsY_), b[3] = cellOf(hi.y, height, cellsY_);
             for (int y = b[2]; y <= b[3]; ++y)
                 for (int x = b[0]; x <= b[1]; ++x)
                     ++start_[size_t(y) * size_t(cellsX_) + size_t(x) + 1];
@@ -77,8 +80,7 @@ public:
     uint32_t find(glm::vec2 p) const {
         if (!std::isfinite(p.x) || !std::isfinite(p.y))
             return UINT32_MAX;
-        const int cx = std::clamp(int(std::floor(p.x)) / kCell, 0, cellsX_ - 1),
-                  cy = std::clamp(int(std::floor(p.y)) / kCell, 0, cellsY_ - 1);
+        const int cx = cellOf(p.x, width_, cellsX_), cy = cellOf(p.y, height_, cellsY_);
         const size_t c = size_t(cy) * size_t(cellsX_) + size_t(cx);
         uint32_t nearest = UINT32_MAX;
         float best = 0.0f;
