@@ -82,8 +82,11 @@ NormalMap bakeNormalMapWork(const NormalBakeMesh &source, const NormalBakeMesh &
     out.width = width;
     out.height = height;
 
-    // Set-up as tasks the threads take in turn (the sorted source first: the walk, the source's
-    // bands and its UV grid wait for it); each builds its own structure.
+    // Set-up as tasks the threads take in turn (the sorted source first: the walk, the cover,
+    // the source's bands and its UV grid wait for it); each builds its own structure. In this
+    // order two threads split them about evenly (callgrind, the benchmark's sphere: the source's
+    // adjacency and walk 127 M then the tangents 85 M on one; the sorted source 20 M, the cover
+    // 119 M, the source's bands 28 M, the target's 7 M and the grid 22 M on the other).
     std::unique_ptr<SortedSource> sorted;
     std::unique_ptr<UvFaceGrid> grid;
     std::unique_ptr<SurfaceWalk> walk;
@@ -99,8 +102,7 @@ NormalMap bakeNormalMapWork(const NormalBakeMesh &source, const NormalBakeMesh &
                 sorted = std::make_unique<SortedSource>(source, width, height);
                 sortedDone.set_value();
                 break;
-            case 1: out.cornerTangents = targetTangents(target); break;
-            case 2: {
+            case 1: {
                 // The adjacency of the source in its own order (its vertices' order, near in
                 // memory: twice as fast as in the atlas' order), renumbered.
                 const std::vector<uint32_t> original =
@@ -117,7 +119,12 @@ NormalMap bakeNormalMapWork(const NormalBakeMesh &source, const NormalBakeMesh &
                                                      source.faceCount, source.vertexCount, opposite.data());
                 break;
             }
-            case 3: out.rgba.resize(texels * 4); break;  // unwritten: the bands write every texel
+            case 2:
+                sortedReady.wait();
+                cover = coverSource(sorted->mesh, target, width, height);
+                coverBands = faceBands(cover.mesh, width, height, kBandRows);
+                break;
+            case 3: out.cornerTangents = targetTangents(target); break;
             case 4:
                 sortedReady.wait();
                 sourceBands = faceBands(sorted->mesh, width, height, kBandRows);
@@ -130,11 +137,7 @@ NormalMap bakeNormalMapWork(const NormalBakeMesh &source, const NormalBakeMesh &
                 sortedReady.wait();
                 grid = std::make_unique<UvFaceGrid>(*sorted, width, height);
                 break;
-            default:
-                sortedReady.wait();
-                cover = coverSource(sorted->mesh, target, width, height);
-                coverBands = faceBands(cover.mesh, width, height, kBandRows);
-                break;
+            default: out.rgba.resize(texels * 4); break;  // unwritten: the bands write every texel
             }
         });
     }
