@@ -11,28 +11,33 @@ EdgeAdjacency buildEdgeAdjacency(const uint32_t *triangles, size_t faceCount, si
     EdgeAdjacency adj;
     const size_t halfEdges = faceCount * 3;
     adj.opposite.assign(halfEdges, kNoOpposite);
-    auto ends = [&](size_t h) {
-        const uint32_t a = triangles[h], b = triangles[h - h % 3 + (h % 3 + 1) % 3];
-        return std::pair<uint32_t, uint32_t>(std::min(a, b), std::max(a, b));
+    // Half-edge h = 3f + k runs from corner k of face f to corner k + 1 (mod 3): visit(h, lo, hi)
+    // with its ends' smaller and larger vertex.
+    auto forEachHalfEdge = [&](auto &&visit) {
+        for (size_t f = 0; f < faceCount; ++f) {
+            const uint32_t *t = triangles + 3 * f;
+            const uint32_t a = t[0], b = t[1], c = t[2];
+            visit(3 * f, std::min(a, b), std::max(a, b));
+            visit(3 * f + 1, std::min(b, c), std::max(b, c));
+            visit(3 * f + 2, std::min(c, a), std::max(c, a));
+        }
     };
 
     // Counting sort by the smaller vertex.
     std::vector<uint32_t> first(vertexCount + 1, 0);
-    for (size_t h = 0; h < halfEdges; ++h) {
-        const auto [lo, hi] = ends(h);
+    forEachHalfEdge([&](size_t, uint32_t lo, uint32_t hi) {
         if (lo != hi)
             ++first[lo + 1];
-    }
+    });
     for (size_t v = 0; v < vertexCount; ++v)
         first[v + 1] += first[v];
     // Each entry packs (larger vertex, half-edge) so a plain integer sort orders a bucket.
     std::vector<uint64_t> keys(first[vertexCount]);
     std::vector<uint32_t> fill(first.begin(), first.end() - 1);
-    for (size_t h = 0; h < halfEdges; ++h) {
-        const auto [lo, hi] = ends(h);
+    forEachHalfEdge([&](size_t h, uint32_t lo, uint32_t hi) {
         if (lo != hi)
             keys[fill[lo]++] = (uint64_t(hi) << 32) | uint64_t(h);
-    }
+    });
 
     for (size_t v = 0; v < vertexCount; ++v) {
         uint64_t *begin = keys.data() + first[v], *end = keys.data() + first[v + 1];

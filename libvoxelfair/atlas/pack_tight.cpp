@@ -1,5 +1,6 @@
 #include "atlas/pack_tight.h"
 
+#include "atlas/turned_shape.h"
 #include "base/parallel_bands.h"
 
 #include <algorithm>
@@ -18,117 +19,6 @@
 
 namespace voxelfair {
 namespace {
-
-// A chart as the search sees it, after a quarter turn: its rows' spans, longest first. A row
-// is one span between its leftmost and rightmost texel, or, for a chart with a bitmap
-// (chart_bitmaps.h), each run of its set texels, so holes inside its rows are left free.
-struct Span {
-    int16_t row, left, length;
-};
-struct Shape {
-    int width = 0, height = 0;
-    std::vector<int16_t> left, right;
-    std::vector<Span> spans;
-    // Per row, its longest span (0: none); and the rows with a span, longest first (as the spans).
-    std::vector<int16_t> need;
-    std::vector<int16_t> needRows;
-};
-
-// The first c in [from, right] where the bitmap byte row[c * stride] (0 or 1) is set (`set`) or
-// not, right + 1 if none. Along a stored row (stride 1 or -1) eight bytes at a time.
-int nextByte(const uint8_t *row, ptrdiff_t stride, int from, int right, bool set) {
-    const uint64_t flip = set ? 0 : 0x0101010101010101u;  // set bytes of the word: the ones sought
-    int c = from;
-    if (stride == 1) {
-        for (; c + 8 <= right + 1; c += 8) {
-            uint64_t v;
-            std::memcpy(&v, row + c, 8);
-            if ((v ^= flip) != 0)
-                return c + __builtin_ctzll(v) / 8;
-        }
-    } else if (stride == -1) {  // c runs down through memory: the word ending at row - c
-        for (; c + 8 <= right + 1; c += 8) {
-            uint64_t v;
-            std::memcpy(&v, row - c - 7, 8);
-            if ((v ^= flip) != 0)
-                return c + (__builtin_clzll(v) - 7) / 8;
-        }
-    }
-    while (c <= right && (row[c * stride] != 0) != set)
-        ++c;
-    return c;
-}
-
-// The shape of mask `m` turned by `turns` quarter turns counter-clockwise (turnInMask), or its
-// bounding box.
-void turnedShape(const ChartMask &m, const std::vector<int16_t> &profiles, int turns, bool box, const uint8_t *bits,
-                 Shape &s) {
-    const int16_t *colBottom = m.colBottom(profiles), *colTop = m.colTop(profiles);
-    const int16_t *rowLeft = m.rowLeft(profiles), *rowRight = m.rowRight(profiles);
-    const int w = m.width, h = m.height;
-    s.width = turns & 1 ? h : w;
-    s.height = turns & 1 ? w : h;
-    s.left.resize(size_t(s.height));
-    s.right.resize(size_t(s.height));
-    for (int r = 0; r < s.height; ++r) {
-        int16_t &left = s.left[size_t(r)], &right = s.right[size_t(r)];
-        if (box) {
-            left = 0, right = int16_t(s.width - 1);
-            continue;
-        }
-        switch (turns) {
-        case 0: left = rowLeft[r], right = rowRight[r]; break;
-        case 1: left = int16_t(h - 1 - colTop[r]), right = int16_t(h - 1 - colBottom[r]); break;
-        case 2: left = int16_t(w - 1 - rowRight[h - 1 - r]), right = int16_t(w - 1 - rowLeft[h - 1 - r]); break;
-        default: left = colBottom[w - 1 - r], right = colTop[w - 1 - r]; break;
-        }
-    }
-    s.spans.clear();
-    if (box || bits == nullptr) {
-        for (int r = 0; r < s.height; ++r)
-            s.spans.push_back({int16_t(r), s.left[size_t(r)], int16_t(s.right[size_t(r)] - s.left[size_t(r)] + 1)});
-    } else {
-        // The bitmap read through the turn (the profiles' mapping above, texel by texel): row r
-        // of the turned shape starts at bits[origin(r)] and steps by `stride` per column.
-        ptrdiff_t stride = 1;
-        auto origin = [&](int r) -> ptrdiff_t {
-            switch (turns) {
-            case 0: return ptrdiff_t(r) * w;
-            case 1: return ptrdiff_t(h - 1) * w + r;
-            case 2: return ptrdiff_t(h - 1 - r) * w + (w - 1);
-            default: return w - 1 - r;
-            }
-        };
-        switch (turns) {
-        case 0: stride = 1; break;
-        case 1: stride = -w; break;
-        case 2: stride = -1; break;
-        default: stride = w; break;
-        }
-        for (int r = 0; r < s.height; ++r) {
-            const uint8_t *row = bits + origin(r);
-            const int right = s.right[size_t(r)];
-            for (int c = s.left[size_t(r)]; c <= right;) {
-                c = nextByte(row, stride, c, right, true);
-                if (c > right)
-                    break;
-                const int start = c;
-                c = nextByte(row, stride, c, right, false);
-                s.spans.push_back({int16_t(r), int16_t(start), int16_t(c - start)});
-            }
-        }
-    }
-    // The longest span admits the fewest places, so it is tested first and the others mostly
-    // confirm it.
-    std::stable_sort(s.spans.begin(), s.spans.end(), [](const Span &a, const Span &b) { return a.length > b.length; });
-    s.need.assign(size_t(s.height), 0);
-    s.needRows.clear();
-    for (const Span &sp : s.spans)
-        if (s.need[size_t(sp.row)] == 0) {
-            s.need[size_t(sp.row)] = sp.length;
-            s.needRows.push_back(sp.row);
-        }
-}
 
 // The free texels of a width x height atlas, row by row. run(y)[x] > 0: x is free and starts a free run
 // of exactly that length; run(y)[x] < 0: x is taken, and so are the next -run(y)[x] - 1 texels
@@ -201,6 +91,16 @@ public:
         for (int x = x1; x >= x0; --x)
             r[x] = --next;
         int x = x0 - 1;
+        // Four texels at a time while all four are free (no value is 0: free ones are positive,
+        // taken ones negative, so no sign bit means free): texels x - 3 .. x get x0 - x + 3 .. x0 - x.
+        for (; x >= 3; x -= 4) {
+            uint64_t v;
+            std::memcpy(&v, r + x - 3, 8);
+            if (v & 0x8000800080008000u)
+                break;
+            v = uint64_t(x0 - x) * 0x0001000100010001u + 0x0000000100020003u;
+            std::memcpy(r + x - 3, &v, 8);
+        }
         for (; x >= 0 && r[x] > 0; --x)
             r[x] = int16_t(x0 - x);
         int16_t *blockMax = &blockMax_[size_t(y) * blocks_];
@@ -228,8 +128,8 @@ private:
 // between are only checked against `below`, so y ends where it would without the skip.
 constexpr size_t kCheckedRows = 8;
 template <class Below>
-bool lowestFit(const FreeRuns &runs, const Shape &shape, int side, int height, Below &&below, int &y, int &x) {
-    const Span &wr = shape.spans[0];
+bool lowestFit(const FreeRuns &runs, const TurnedShape &shape, int side, int height, Below &&below, int &y, int &x) {
+    const ShapeSpan &wr = shape.spans[0];
     const int16_t *need = shape.need.data();
     int next = y;        // rows before it are known to miss
     size_t blocked = 0;  // the span that met an obstacle last
@@ -265,7 +165,7 @@ bool lowestFit(const FreeRuns &runs, const Shape &shape, int side, int height, B
                 const size_t i = k == 0 ? blocked : k == blocked ? 0 : k;
                 if (i == 0)
                     continue;  // the first span fits there (nextRun)
-                const Span &sp = shape.spans[i];
+                const ShapeSpan &sp = shape.spans[i];
                 const int v = runs.at(y + sp.row, x + sp.left);
                 if (v < sp.length) {
                     x += v > 0 ? v + 1 : -v;  // past the obstacle this row met
@@ -388,20 +288,26 @@ TightPacking packTight(const ChartMasks &masks, int side, int height, bool allow
         return result;
 
     FreeRuns runs(side, height);
-    Shape shape, best;
+    TurnedShape shape, best;
     // Large charts' turns (no cursor) searched side by side on two threads: each search gives up
     // once its top, then its turn, can no longer beat the best found (key top * 4 + turn), so the
     // turn kept is the first with the lowest top, as one after the other.
     std::optional<TurnSharing> sharing;
-    Shape turned[4];
+    TurnedShape turned[4];
     struct TurnFit {
         bool found = false;
         int y = 0, x = 0;
     } fits[4];
     std::atomic<int64_t> bestKey{INT64_MAX};
+    ColumnRuns columnRuns;  // the chart's bitmap's columns, found once for its odd turns
     for (uint32_t c : order) {
         const bool box = boxed(c), small = area(c) < shapedArea;
         const uint8_t *bits = bitmaps && bitmaps->has(c) ? bitmaps->of(c) : nullptr;
+        const ColumnRuns *columns = nullptr;
+        if (bits && !box && allowTurns) {
+            findColumnRuns(bits, masks.charts[c].width, masks.charts[c].height, columnRuns);
+            columns = &columnRuns;
+        }
         int bestTop = INT32_MAX;
         const bool shared = !small && allowTurns && bandThreads(threads, 2) > 1;
         if (shared) {
@@ -410,8 +316,8 @@ TightPacking packTight(const ChartMasks &masks, int side, int height, bool allow
             bestKey = INT64_MAX;
             const std::function<void(int)> search = [&](int t) {
                 fits[t].found = false;
-                Shape &sh = turned[t];
-                turnedShape(masks.charts[c], masks.profiles, t, false, bits, sh);
+                TurnedShape &sh = turned[t];
+                turnedShape(masks.charts[c], masks.profiles, t, false, bits, columns, sh);
                 if (sh.width > side || sh.height > height)
                     return;
                 int y = std::max(0, runs.firstRowFrom(sh.spans[0].length) - sh.spans[0].row), x = 0;
@@ -435,7 +341,7 @@ TightPacking packTight(const ChartMasks &masks, int side, int height, bool allow
             }
         }
         for (int turns = 0; turns < (allowTurns ? (box ? 2 : 4) : 1) && !shared; ++turns) {
-            turnedShape(masks.charts[c], masks.profiles, turns, box, bits, shape);
+            turnedShape(masks.charts[c], masks.profiles, turns, box, bits, columns, shape);
             if (shape.width > side || shape.height > height)
                 continue;
             int y = std::max(0, runs.firstRow(shape.spans[0].length) - shape.spans[0].row), x = 0;
@@ -461,7 +367,7 @@ TightPacking packTight(const ChartMasks &masks, int side, int height, bool allow
             return result;
         result.top = std::max(result.top, bestTop);
         const ChartPlacement &p = placements[c];
-        for (const Span &sp : best.spans) {
+        for (const ShapeSpan &sp : best.spans) {
             result.placedRoom += size_t(sp.length);
             runs.take(p.y + sp.row, p.x + sp.left, p.x + sp.left + sp.length - 1);
         }

@@ -122,7 +122,7 @@ FairingReport fairModifiedLanczos(const MutablePolygonMesh &mesh, const uint8_t 
     // fresh multi-megabyte arrays cost more in first-touch page faults than the pass itself.
     thread_local CsrAdjacency neighbours;
     thread_local std::vector<glm::vec3> previous;
-    buildVertexNeighbours(mesh, neighbours);
+    buildVertexNeighbours(mesh, neighbours, options.threads);
     // Jacobi: every vertex of a pass reads the positions from before that pass.
     previous.assign(positions, positions + vertexCount);
     for (int pass = 0; pass < options.passes; ++pass) {

@@ -27,8 +27,9 @@ struct LanczosFairingOptions {
     int passes = 1;
     // Size of a voxel in the positions' units: the displacement unit. 0 = detectVoxelSize().
     float voxelSize = 0.0f;
-    // Threads smoothing the vertices (0: one per hardware thread; meshes under 16384 vertices
-    // use one). Every vertex reads the positions from before the pass: the same result for any count.
+    // Threads smoothing the vertices and sorting their neighbours (0: one per hardware thread;
+    // meshes under 16384 vertices smooth on one). Every vertex reads the positions from before
+    // the pass: the same result for any count.
     int threads = 0;
 };
 

@@ -1,6 +1,7 @@
 #include "mesh/csr_adjacency.h"
 
 #include "base/error.h"
+#include "base/parallel_bands.h"
 
 #include <algorithm>
 #include <limits>
@@ -11,6 +12,9 @@ namespace voxelfair {
 namespace {
 
 constexpr size_t kMaxIndex = std::numeric_limits<uint32_t>::max();
+
+// Fewer rows than this are sorted on one thread: starting threads would cost more.
+constexpr size_t kLeastParallelRows = 8192;
 
 // Closes the gaps left by rows that kept fewer items than were reserved for them.
 // `rowEnd[v]` is where row v's kept items end inside its reserved range.
@@ -42,7 +46,7 @@ bool prefixSum(std::vector<uint32_t> &offsets, const std::vector<uint64_t> &coun
 
 }  // namespace
 
-void buildVertexNeighbours(const PolygonMesh &mesh, CsrAdjacency &out) {
+void buildVertexNeighbours(const PolygonMesh &mesh, CsrAdjacency &out, int threads) {
     // Cleared, not freed: a caller that keeps `out` reuses its memory on the next build.
     out.offsets.clear();
     out.items.clear();
@@ -80,14 +84,19 @@ void buildVertexNeighbours(const PolygonMesh &mesh, CsrAdjacency &out) {
         }
     }
 
-    for (size_t v = 0; v < vertexCount; ++v) {
-        uint32_t *row = out.items.data() + out.offsets[v];
-        uint32_t *rowEnd = out.items.data() + cursor[v];
-        std::sort(row, rowEnd);
-        rowEnd = std::unique(row, rowEnd);
-        rowEnd = std::remove(row, rowEnd, uint32_t(v));  // a polygon repeating v
-        cursor[v] = uint32_t(rowEnd - out.items.data());
-    }
+    // Each row on its own: runs of rows on up to `threads` threads.
+    const int workers = vertexCount >= kLeastParallelRows ? bandThreads(threads, vertexCount) : 1;
+    const size_t bands = workers > 1 ? 4 * size_t(workers) : 1;
+    runBands(bands, workers, [&](size_t band) {
+        for (size_t v = vertexCount * band / bands; v < vertexCount * (band + 1) / bands; ++v) {
+            uint32_t *row = out.items.data() + out.offsets[v];
+            uint32_t *rowEnd = out.items.data() + cursor[v];
+            std::sort(row, rowEnd);
+            rowEnd = std::unique(row, rowEnd);
+            rowEnd = std::remove(row, rowEnd, uint32_t(v));  // a polygon repeating v
+            cursor[v] = uint32_t(rowEnd - out.items.data());
+        }
+    });
     compactRows(out, cursor);
 }
 

@@ -27,7 +27,9 @@ struct CsrAdjacency {
 // and holds no duplicate and never v itself (a polygon that repeats a vertex does not make it its
 // own neighbour). `out` is reused (its memory kept) for the next mesh. Throws MeshError on invalid
 // polygons (validatePolygons) or more adjacencies than 32-bit offsets hold; `out` is then empty.
-void buildVertexNeighbours(const PolygonMesh &mesh, CsrAdjacency &out);
+// The rows are sorted on up to `threads` threads (0: one per hardware thread): the same rows for
+// any count.
+void buildVertexNeighbours(const PolygonMesh &mesh, CsrAdjacency &out, int threads = 1);
 
 // Polygons of v, in increasing polygon order; a polygon that repeats v is listed once. Throws
 // MeshError like buildVertexNeighbours.
