@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -39,6 +40,7 @@ struct MaskPart {
     std::vector<uint8_t> bits;
     std::vector<size_t> bitsFirst, setBlocks;
     size_t totalRowTexels = 0;
+    std::vector<uint64_t> seen;  // scratch: the columns seen so far in a pass over a bitmap's rows
 };
 
 // Fewer faces than this are rasterised on one thread: starting threads would cost more.
@@ -144,31 +146,61 @@ bool rasterizeBlocks(const AtlasCharts &charts, size_t c, double origin, int w, 
         part.totalRowTexels += size_t(width) * size_t(height);
         return true;
     }
-    // Each row's first and last set block; each column's lowest and highest (the highest row
-    // seen so far going up, the lowest the first), over the rows' extents only.
+    // Each row's first and last set block; each column's lowest and highest: the rows where it
+    // is first seen going up, then going down. Eight blocks (bytes of 0 or 1) at a time.
     std::fill(bottom, bottom + width, int16_t(height));
     std::fill(top, top + width, int16_t(-1));
-    size_t set = 0;
+    const size_t words = (size_t(width) + 7) / 8, whole = size_t(width) / 8;
+    auto load = [&](int y, size_t k) {
+        const uint8_t *p = bits + size_t(y) * size_t(width) + 8 * k;
+        uint64_t v = 0;
+        if (k < whole)
+            std::memcpy(&v, p, 8);
+        else
+            for (size_t i = 0; i < size_t(width) % 8; ++i)
+                v |= uint64_t(p[i]) << (8 * i);
+        return v;
+    };
+    // Set bytes of a word of 0/1 bytes: their sum, gathered in the top byte.
+    auto count = [](uint64_t v) { return size_t((v * 0x0101010101010101u) >> 56); };
+    // The bytes of `fresh` (columns 8k + byte) not seen before in the pass: their extent is row y.
+    auto note = [](uint64_t fresh, size_t k, int16_t y, int16_t *extent) {
+        for (; fresh != 0; fresh &= fresh - 1)
+            extent[8 * k + size_t(__builtin_ctzll(fresh) / 8)] = y;
+    };
+    std::vector<uint64_t> &seen = part.seen;
+    seen.assign(words, 0);
+    size_t set = 0, columns = 0;
     for (int y = 0; y < height; ++y) {
-        const uint8_t *row = bits + size_t(y) * size_t(width);
-        int l = 0, r = width - 1;
-        while (l < width && !row[l])
-            ++l;
-        while (r >= l && !row[r])
-            --r;
-        left[y] = int16_t(l < width ? l : width);
-        right[y] = int16_t(l < width ? r : -1);
-        if (l > r)
-            continue;
-        part.totalRowTexels += size_t(r - l + 1);
-        const int16_t row16 = int16_t(y);
-        for (int x = l; x <= r; ++x) {
-            const bool on = row[x] != 0;
-            set += on;
-            top[x] = on ? row16 : top[x];
-            bottom[x] = on && bottom[x] == height ? row16 : bottom[x];
+        int l = -1, r = -1;
+        for (size_t k = 0; k < words; ++k) {
+            const uint64_t v = load(y, k);
+            if (v == 0)
+                continue;
+            set += count(v);
+            if (l < 0)
+                l = int(8 * k) + __builtin_ctzll(v) / 8;
+            r = int(8 * k) + (63 - __builtin_clzll(v)) / 8;
+            const uint64_t fresh = v & ~seen[k];
+            seen[k] |= v;
+            columns += count(fresh);
+            note(fresh, k, int16_t(y), bottom);
         }
+        left[y] = int16_t(l >= 0 ? l : width);
+        right[y] = int16_t(r);
+        if (l >= 0)
+            part.totalRowTexels += size_t(r - l + 1);
     }
+    seen.assign(words, 0);
+    for (int y = height - 1; y >= 0 && columns > 0; --y)
+        for (size_t k = 0; k < words; ++k) {
+            const uint64_t v = load(y, k), fresh = v & ~seen[k];
+            if (fresh == 0)
+                continue;
+            seen[k] |= v;
+            columns -= count(fresh);
+            note(fresh, k, int16_t(y), top);
+        }
     part.bitsFirst.push_back(first);
     part.setBlocks.push_back(set);
     return true;

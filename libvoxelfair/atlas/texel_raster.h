@@ -141,8 +141,8 @@ inline void edgeInverses(const Setup &s, double inverse[3]) {
 // texel either way, the ends are settled with `inside`, the exact per-texel test, from one
 // texel further out. Either way the span is exactly the texels that test accepts.
 template <class Inside>
-inline void rowSpan(const Setup &s, const double reach[3], const RowSolver &r, int y, Inside &&inside, int &xl,
-                    int &xr) {
+__attribute__((always_inline)) inline void rowSpan(const Setup &s, const double reach[3], const RowSolver &r, int y,
+                                                   Inside &&inside, int &xl, int &xr) {
     const double j = y - r.y0;
     int lo = r.x0, hi = r.x1;
     bool clear = true;
