@@ -1,6 +1,7 @@
 #include "atlas/pack_tight.h"
 
 #include "atlas/turned_shape.h"
+#include "base/default_init_allocator.h"
 #include "base/parallel_bands.h"
 
 #include <algorithm>
@@ -32,11 +33,14 @@ public:
         : side_(width), height_(height), blocks_((width + kBlock - 1) / kBlock), run_(size_t(width) * height),
           blockMax_(size_t(height) * blocks_), widest_(size_t(height), int16_t(width)),
           firstRow_(size_t(width) + 1, 0) {
-        for (int y = 0; y < height; ++y) {
-            for (int x = 0; x < width; ++x)
-                run_[size_t(y) * width + x] = int16_t(width - x);
-            for (int b = 0; b < blocks_; ++b)
-                blockMax_[size_t(y) * blocks_ + b] = int16_t(width - b * kBlock);
+        // Every row starts as the first: one free run of the whole width.
+        for (int x = 0; x < width; ++x)
+            run_[size_t(x)] = int16_t(width - x);
+        for (int b = 0; b < blocks_; ++b)
+            blockMax_[size_t(b)] = int16_t(width - b * kBlock);
+        for (int y = 1; y < height; ++y) {
+            std::memcpy(&run_[size_t(y) * width], run_.data(), size_t(width) * sizeof(int16_t));
+            std::memcpy(&blockMax_[size_t(y) * blocks_], blockMax_.data(), size_t(blocks_) * sizeof(int16_t));
         }
     }
 
@@ -112,8 +116,9 @@ public:
     }
 
 private:
-    int side_, height_, blocks_;  // side_: the width
-    std::vector<int16_t> run_, blockMax_, widest_;
+    int side_, height_, blocks_;                                          // side_: the width
+    std::vector<int16_t, DefaultInitAllocator<int16_t>> run_, blockMax_;  // written in full when made
+    std::vector<int16_t> widest_;
     std::vector<int> firstRow_;
 };
 

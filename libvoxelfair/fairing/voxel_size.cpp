@@ -24,6 +24,10 @@ float detectVoxelSize(const PolygonMesh &mesh, float expected) {
     const double binsPerLog = 1.0 / std::log1p(1e-3);
     std::vector<std::pair<long, float>> lengths;
     lengths.reserve(std::min(indexCount, 2 * kMaxEdges));
+    // A voxel mesh's edges mostly repeat one length exactly (the voxel's, before fairing): the
+    // last length's bin is kept, so the logarithm is taken when the length changes.
+    float lastLength = 0.0f;
+    long lastBin = 0;
     for (size_t p = 0; p < polygonCount; p += stride) {
         const uint32_t first = polygonOffsets[p], last = polygonOffsets[p + 1];
         if (last <= first + 1 || last > indexCount)
@@ -36,7 +40,11 @@ float detectVoxelSize(const PolygonMesh &mesh, float expected) {
             const float length = glm::length(positions[b] - positions[a]);
             if (!(length > 0.0f) || !std::isfinite(length))
                 continue;
-            lengths.emplace_back(std::lround(std::log(double(length)) * binsPerLog), length);
+            if (length != lastLength) {
+                lastLength = length;
+                lastBin = std::lround(std::log(double(length)) * binsPerLog);
+            }
+            lengths.emplace_back(lastBin, length);
         }
     }
     if (lengths.empty())
