@@ -159,8 +159,9 @@ bool FilterVoxelfairPlugin::applyAttributeSmoothing(MeshModel &m, const RichPara
     computePolygonNormals(mesh, polygonNormals.data());
     VertexNormalOptions normalOptions;
     if (!parameters.getBool("distinctNormals"))
-        normalOptions.sameDirection = 2.0f;  // never merge: plain mean
-    computeVertexNormals(mesh, polygonNormals.data(), vertexNormals.data(), normalOptions);
+        normalOptions.sameDirection = 2.0f;                     // never merge: plain mean
+    const CsrAdjacency polygonsOf = buildVertexPolygons(mesh);  // for the normals and the colours
+    computeVertexNormals(mesh, polygonsOf, polygonNormals.data(), vertexNormals.data(), normalOptions);
 
     // Face colours: the polygon's first triangle's colour; without face colours, the vertex colours
     // already there (or a flat grey) are kept and said so.
@@ -173,7 +174,7 @@ bool FilterVoxelfairPlugin::applyAttributeSmoothing(MeshModel &m, const RichPara
         }
         std::vector<glm::vec4> vertexColours(arrays.positions.size());
         mesh.polygonColours = polygonColours.data();
-        computeVertexColours(mesh, vertexColours.data());
+        computeVertexColours(mesh, polygonsOf, vertexColours.data());
         m.updateDataMask(MeshModel::MM_VERTCOLOR);
         for (size_t i = 0; i < arrays.vertexOf.size(); ++i) {
             const glm::vec4 c = glm::clamp(glm::round(vertexColours[i]), 0.0f, 255.0f);

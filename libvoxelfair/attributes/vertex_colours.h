@@ -9,6 +9,7 @@
 // lattice is uniform too. Colours are averaged as given (no sRGB linearisation), like the authors.
 #pragma once
 
+#include "mesh/csr_adjacency.h"
 #include "mesh/polygon_mesh.h"
 
 #include <cstddef>
@@ -22,5 +23,8 @@ namespace voxelfair {
 // polygon uses), from the mesh's polygonColours. Call it on the quads, before triangulation.
 // Throws MeshError on invalid polygons or missing colours, before writing anything.
 void computeVertexColours(const PolygonMesh &mesh, glm::vec4 *vertexColours);
+// The same with the mesh's vertex polygons already built (buildVertexPolygons(mesh)), as
+// computeVertexNormals takes them. Throws MeshError when they have another vertex count.
+void computeVertexColours(const PolygonMesh &mesh, const CsrAdjacency &polygonsOf, glm::vec4 *vertexColours);
 
 }  // namespace voxelfair

@@ -1,9 +1,11 @@
 #include "attributes/vertex_normals.h"
 
+#include "base/error.h"
 #include "mesh/csr_adjacency.h"
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -12,8 +14,15 @@ namespace voxelfair {
 
 void computeVertexNormals(const PolygonMesh &mesh, const glm::vec3 *polygonNormals, glm::vec3 *vertexNormals,
                           const VertexNormalOptions &options) {
-    const CsrAdjacency polygonsOf = buildVertexPolygons(mesh);
+    computeVertexNormals(mesh, buildVertexPolygons(mesh), polygonNormals, vertexNormals, options);
+}
+
+void computeVertexNormals(const PolygonMesh &mesh, const CsrAdjacency &polygonsOf, const glm::vec3 *polygonNormals,
+                          glm::vec3 *vertexNormals, const VertexNormalOptions &options) {
     const size_t vertexCount = mesh.vertexCount;
+    if (polygonsOf.rowCount() != vertexCount)
+        throw MeshError("vertex normals: vertex polygons for " + std::to_string(polygonsOf.rowCount()) +
+                        " vertices on a mesh of " + std::to_string(vertexCount));
 
     // A handful of faces meet at a vertex, so a linear scan of the directions kept so far is
     // the cheapest dedupe; the scratch holds the longest row, so it never grows in the loop.

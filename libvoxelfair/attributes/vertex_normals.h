@@ -6,6 +6,7 @@
 // (±1,±1,±1)/sqrt(3) however the faces around it are sized or split into triangles.
 #pragma once
 
+#include "mesh/csr_adjacency.h"
 #include "mesh/polygon_mesh.h"
 
 #include <cstddef>
@@ -28,5 +29,10 @@ struct VertexNormalOptions {
 // writing anything.
 void computeVertexNormals(const PolygonMesh &mesh, const glm::vec3 *polygonNormals, glm::vec3 *vertexNormals,
                           const VertexNormalOptions &options = {});
+// The same with the mesh's vertex polygons already built (buildVertexPolygons(mesh)), for a caller
+// that also takes the vertex colours (vertex_colours.h) from them. Throws MeshError when they
+// have another vertex count.
+void computeVertexNormals(const PolygonMesh &mesh, const CsrAdjacency &polygonsOf, const glm::vec3 *polygonNormals,
+                          glm::vec3 *vertexNormals, const VertexNormalOptions &options = {});
 
 }  // namespace voxelfair

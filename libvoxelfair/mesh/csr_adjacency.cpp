@@ -72,10 +72,22 @@ void buildVertexNeighbours(const PolygonMesh &mesh, CsrAdjacency &out, int threa
     out.items.resize(out.offsets[vertexCount]);
 
     std::vector<uint32_t> cursor(out.offsets.begin(), out.offsets.end() - 1);
+    uint32_t *const items = out.items.data();
     for (size_t p = 0; p < polygonCount; ++p) {
         const uint32_t first = polygonOffsets[p], last = polygonOffsets[p + 1];
         if (last - first < 2)
             continue;
+        if (last - first == 4) {  // a quad (the voxel surfaces'): as the loop below, unrolled
+            const uint32_t *q = polygonIndices + first;
+            for (int i = 0; i < 4; ++i) {
+                uint32_t *row = items + cursor[q[i]];
+                cursor[q[i]] += 3;
+                for (int j = 0, k = 0; j < 4; ++j)
+                    if (j != i)
+                        row[k++] = q[j];
+            }
+            continue;
+        }
         for (uint32_t i = first; i < last; ++i) {
             const uint32_t v = polygonIndices[i];
             for (uint32_t j = first; j < last; ++j)

@@ -284,13 +284,14 @@ inline Attributes smoothAttributes(const QuadMesh &mesh) {
     a.vertexNormals.resize(vertices);
     PolygonMesh view = mesh.view();
     computePolygonNormals(view, a.quadNormals.data());
-    computeVertexNormals(view, a.quadNormals.data(), a.vertexNormals.data());
+    const CsrAdjacency polygonsOf = buildVertexPolygons(view);  // for the normals and the colours
+    computeVertexNormals(view, polygonsOf, a.quadNormals.data(), a.vertexNormals.data());
 
     std::vector<glm::vec4> quadColours(quads), vertexColours(vertices);
     for (size_t q = 0; q < quads; ++q)
         quadColours[q] = glm::vec4(glm::vec3(mesh.quadColours[q]), 255.0f);
     view.polygonColours = quadColours.data();
-    computeVertexColours(view, vertexColours.data());
+    computeVertexColours(view, polygonsOf, vertexColours.data());
     a.vertexColours.resize(vertices);
     for (size_t v = 0; v < vertices; ++v)
         a.vertexColours[v] = glm::u8vec3(glm::clamp(glm::round(glm::vec3(vertexColours[v])), 0.0f, 255.0f));

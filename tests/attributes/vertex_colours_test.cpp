@@ -53,3 +53,20 @@ TEST(AttributesVertexColours, PolygonRepeatingAVertexCountsOnce) {
     const uint32_t bad[] = {0, 1, 0, 2, 0, 3, 5};
     EXPECT_THROW(computeVertexColours({nullptr, 5, offsets, bad, 2, faceColours}, colours), MeshError);
 }
+
+// With the vertex polygons built once by the caller (shared with the vertex normals): the same
+// colours; polygons built for another mesh are refused before anything is written.
+TEST(AttributesVertexColours, PrebuiltVertexPolygonsGiveTheSameColours) {
+    const std::vector<uint32_t> offsets = {0, 4, 8};
+    const std::vector<uint32_t> quads = {0, 1, 2, 3, 1, 4, 5, 2};
+    const glm::vec4 faceColours[] = {kRed, kBlue};
+    const PolygonMesh mesh{nullptr, 7, offsets.data(), quads.data(), 2, faceColours};
+    std::vector<glm::vec4> plain(7), shared(7);
+    computeVertexColours(mesh, plain.data());
+    computeVertexColours(mesh, buildVertexPolygons(mesh), shared.data());
+    EXPECT_EQ(plain, shared);
+    const PolygonMesh fewer{nullptr, 6, offsets.data(), quads.data(), 2, faceColours};
+    std::vector<glm::vec4> untouched(7, kRed);
+    EXPECT_THROW(computeVertexColours(mesh, buildVertexPolygons(fewer), untouched.data()), MeshError);
+    EXPECT_EQ(untouched, std::vector<glm::vec4>(7, kRed));
+}

@@ -1,6 +1,7 @@
 #include "attributes/vertex_normals.h"
 
 #include "attributes/face_normals.h"
+#include "base/error.h"
 #include "attributes/triangulate.h"
 #include "shapes/box_lattice.h"
 
@@ -94,4 +95,28 @@ TEST(AttributesVertexNormals, TriangulatedBoxCornersAreExactDiagonals) {
         worstPlain = std::max(worstPlain, angleDegrees(plain[v], diagonal));
     }
     EXPECT_GT(worstPlain, 10.0f);  // unequal triangle counts (2:1:1) tilt it by up to 19.5 degrees
+}
+
+// With the vertex polygons built once by the caller (shared with the vertex colours): the same
+// normals; polygons built for another mesh are refused before anything is written.
+TEST(AttributesVertexNormals, PrebuiltVertexPolygonsGiveTheSameNormals) {
+    const glm::vec3 z(0, 0, 1), x(1, 0, 0), y(0, 1, 0);
+    const std::vector<glm::vec3> faceNormals = {z, z, x, z, y};
+    std::vector<uint32_t> offsets = {0}, indices;
+    for (uint32_t k = 0; k < faceNormals.size(); ++k) {
+        indices.insert(indices.end(), {0, k + 1});
+        offsets.push_back(uint32_t(indices.size()));
+    }
+    const PolygonMesh mesh{nullptr, faceNormals.size() + 2, offsets.data(), indices.data(), faceNormals.size()};
+    std::vector<glm::vec3> plain(mesh.vertexCount), shared(mesh.vertexCount);
+    computeVertexNormals(mesh, faceNormals.data(), plain.data());
+    computeVertexNormals(mesh, buildVertexPolygons(mesh), faceNormals.data(), shared.data());
+    EXPECT_EQ(plain, shared);
+    EXPECT_GT(glm::length(shared[0]), 0.99f);  // the fan's vertex has a normal
+    PolygonMesh fewer = mesh;
+    fewer.vertexCount -= 1;
+    std::vector<glm::vec3> untouched(mesh.vertexCount, x);
+    EXPECT_THROW(computeVertexNormals(mesh, buildVertexPolygons(fewer), faceNormals.data(), untouched.data()),
+                 MeshError);
+    EXPECT_EQ(untouched, std::vector<glm::vec3>(mesh.vertexCount, x));
 }
