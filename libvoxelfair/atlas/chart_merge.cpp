@@ -126,11 +126,11 @@ size_t mergeSmallCharts(const AtlasMesh &mesh, const uint32_t *opposite, const C
         float cosine;
     };
     std::vector<FaceGrid> grids(chartCount);  // built when a large chart is first a candidate
-    auto faceBox = [&](uint32_t f) {
-        Box b;
-        b.add(&uv[3 * size_t(f)]);
-        return b;
-    };
+    // Each face's UV box, kept with its UVs (a moved face's updated when it moves).
+    std::vector<Box> boxes(faceCount);
+    for (size_t f = 0; f < faceCount; ++f)
+        boxes[f].add(&uv[3 * f]);
+    auto faceBox = [&](uint32_t f) -> const Box & { return boxes[f]; };
     auto gridOf = [&](uint32_t a) -> FaceGrid & {
         FaceGrid &g = grids[a];
         if (g.built())
@@ -221,6 +221,8 @@ size_t mergeSmallCharts(const AtlasMesh &mesh, const uint32_t *opposite, const C
                 continue;
             for (size_t i = 0; i < faces.size(); ++i) {
                 std::copy_n(&moved[3 * i], 3, &uv[3 * size_t(faces[i])]);
+                boxes[faces[i]] = Box{};
+                boxes[faces[i]].add(&moved[3 * i]);
                 chartOf[faces[i]] = a;
                 if (grids[a].built())
                     grids[a].insert(faces[i], faceBox(faces[i]));
