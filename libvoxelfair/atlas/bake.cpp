@@ -138,10 +138,10 @@ void dilate(Canvas &canvas, int rings, int threads) {
     });
     for (const std::vector<uint32_t> &f : found)
         frontier.insert(frontier.end(), f.begin(), f.end());
-    std::vector<uint8_t> colours;
     for (int ring = 0; ring < rings && !frontier.empty(); ++ring) {
-        // Each ring texel's colour from its painted neighbours (read only), then all painted.
-        colours.resize(3 * frontier.size());
+        // Each ring texel's colour from its painted neighbours, written at once: the ring's texels
+        // are not painted yet (filled 0 or 2), so no other ring texel reads them; then all marked
+        // painted.
         const size_t chunks = threads > 1 && frontier.size() >= 4096 ? size_t(4 * threads) : 1;
         runBands(chunks, threads, [&](size_t chunk) {
             for (size_t k = frontier.size() * chunk / chunks; k < frontier.size() * (chunk + 1) / chunks; ++k) {
@@ -156,12 +156,14 @@ void dilate(Canvas &canvas, int rings, int threads) {
                             ++count;
                         }
                     }
+                uint8_t *texel = &canvas.rgba[4 * size_t(frontier[k])];
                 for (int ch = 0; ch < 3; ++ch)
-                    colours[3 * k + size_t(ch)] = uint8_t((sum[ch] + count / 2) / count);
+                    texel[ch] = uint8_t((sum[ch] + count / 2) / count);
+                texel[3] = 255;
             }
         });
-        for (size_t k = 0; k < frontier.size(); ++k)
-            canvas.paint(frontier[k], {colours[3 * k], colours[3 * k + 1], colours[3 * k + 2]});
+        for (const uint32_t i : frontier)
+            filled[i] = 1;
         next.clear();
         if (ring + 1 < rings)
             for (uint32_t i : frontier) {
