@@ -358,7 +358,12 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
     // pass, for any thread count.
     const int workers = bandThreads(options.threads, size_t(height));
     const size_t bands = workers > 1 && mesh.faceCount >= kLeastParallelFaces ? size_t(2 * workers) : 1;
-    std::vector<std::vector<uint32_t>> thinOf(bands);  // band b notes the thin faces of its share of them
+    // Band b notes the thin faces of its share of them (below), with the texel boxes to paint.
+    struct ThinFace {
+        uint32_t face;
+        uint16_t x0[4], x1[4], y0[4], y1[4];  // per interior point
+    };
+    std::vector<std::vector<ThinFace>> thinOf(bands);
     std::vector<std::vector<uint32_t>> reachedOf(bands);
     runBands(bands, workers, [&](size_t band) {
         const int rowFrom = int(size_t(height) * band / bands);
@@ -376,8 +381,17 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
             load(f, q);
             if (crisp && f >= noteFrom && f < noteTo) {
                 const double inradius = faceInteriorPoints(q, points);
-                if (inradius > 0 && inradius < std::sqrt(2.0) + 2 * kUvRounding)
-                    thinOf[band].push_back(uint32_t(f));
+                if (inradius > 0 && inradius < std::sqrt(2.0) + 2 * kUvRounding) {
+                    ThinFace thin{uint32_t(f), {}, {}, {}, {}};
+                    for (int k = 0; k < 4; ++k) {
+                        const glm::dvec2 &p = points[k];
+                        thin.x0[k] = uint16_t(clampToInt(p.x - kUvRounding, 0, width - 1));
+                        thin.x1[k] = uint16_t(clampToInt(p.x + kUvRounding, 0, width - 1));
+                        thin.y0[k] = uint16_t(clampToInt(p.y - kUvRounding, 0, height - 1));
+                        thin.y1[k] = uint16_t(clampToInt(p.y + kUvRounding, 0, height - 1));
+                    }
+                    thinOf[band].push_back(thin);
+                }
             }
             if (outside(q))
                 continue;
@@ -394,10 +408,6 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
         }
         reached = {};
     });
-    std::vector<uint32_t> thin;
-    for (const std::vector<uint32_t> &t : thinOf)
-        thin.insert(thin.end(), t.begin(), t.end());
-    glm::dvec2 q[3], points[4] = {};
     // Faces too thin for the centre rule to guarantee their interior (UV inradius under sqrt(2)
     // texels: a texel holding one of their interior points may have its centre in a neighbour)
     // paint the texels under their interior points with their own colour, and the texels
@@ -407,19 +417,13 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
     // their centres inside the face. Where two thin faces of different colours would share such
     // a texel, the atlas gave one of them a chart of its own beforehand (crowded_faces.h: points
     // closer than sqrt(2) + 0.01 texels), so the order does not matter.
-    for (uint32_t f : thin) {
-        load(f, q);
-        faceInteriorPoints(q, points);
-        for (const glm::dvec2 &p : points) {
-            const int x0 = clampToInt(p.x - kUvRounding, 0, width - 1),
-                      x1 = clampToInt(p.x + kUvRounding, 0, width - 1);
-            const int y0 = clampToInt(p.y - kUvRounding, 0, height - 1),
-                      y1 = clampToInt(p.y + kUvRounding, 0, height - 1);
-            for (int y = y0; y <= y1; ++y)
-                for (int x = x0; x <= x1; ++x)
-                    canvas.paint(canvas.index(x, y), mesh.faceColours[f]);
-        }
-    }
+    // The texel boxes of their interior points were found beside the bake (bands in face order).
+    for (const std::vector<ThinFace> &faces : thinOf)
+        for (const ThinFace &thin : faces)
+            for (int k = 0; k < 4; ++k)
+                for (int y = thin.y0[k]; y <= thin.y1[k]; ++y)
+                    for (int x = thin.x0[k]; x <= thin.x1[k]; ++x)
+                        canvas.paint(canvas.index(x, y), mesh.faceColours[thin.face]);
     out.dilation = options.dilation < 0 ? layout.gutter / 2 : std::min(options.dilation, width);
     dilate(canvas, out.dilation, bands > 1 ? workers : 1);
     if (layout.block == 2 && out.dilation > 0)
