@@ -23,7 +23,8 @@ namespace {
 constexpr int kCell = 16;        // the target's UV grid, texels a side
 constexpr float kMinCos = 0.5f;  // a ray meets a target face at most 60 degrees off its normal
 constexpr int kMaxSteps = 32;
-constexpr float kOnEdge = 1e-5f;  // a weight this far below 0 still inside
+constexpr float kMaxCoverArea = 128.0f;  // twice the largest UV area (texels) a face covers
+constexpr float kOnEdge = 1e-5f;         // a weight this far below 0 still inside
 
 // The target's faces by the grid cells their UV boxes meet, and the face holding a UV point.
 class TargetUvGrid {
@@ -219,7 +220,8 @@ SourceCover coverSource(const NormalBakeMesh &source, const NormalBakeMesh &targ
                        scale.y;
             };
             const float a = area(to), b = area(s);
-            covers = a * b > 0.0f && std::abs(a) > 0.25f * std::abs(b) && std::abs(a) < 4.0f * std::abs(b);
+            covers = a * b > 0.0f && std::abs(a) > 0.25f * std::abs(b) && std::abs(a) < 4.0f * std::abs(b) &&
+                     std::abs(b) <= kMaxCoverArea;
         }
         if (covers)
             ++out.coveringFaces;

@@ -6,10 +6,13 @@
 // stepping by the ray's crossing of each face's plane) to the target point whose projection back
 // onto the source is, to first order, the vertex itself; its target UV follows from the face's
 // corners. A source triangle whose three corners land on one target chart, facing the way the
-// source does, unflipped in UV, then covers the target texels inside its carried UV triangle,
-// each with the source normal interpolated at its weights there (a linear map of the texel's UV
-// onto the source triangle, exact at its corners). Texels no such triangle covers (chart seams,
-// folds, the far side of a thin part, vertices the ray misses) are left to the per-texel search.
+// source does, unflipped in UV, of at most 64 texels in UV (within 4x of its carried area), then
+// covers the target texels inside its carried UV triangle, each with the source normal
+// interpolated at its weights there (a linear map of the texel's UV onto the source triangle,
+// exact at its corners: over a larger triangle, as a small atlas' finer map gives, the linear
+// map strays from the projection, measured on the goal's models). Texels no such triangle covers
+// (chart seams, folds, the far side of a thin part, vertices the ray misses, large triangles)
+// are left to the per-texel search.
 //
 // SourceCover keeps, per source face (in the order of the mesh given: the bake's sorted source),
 // its corners' target UVs (normalised like wedgeUv; NaN where the face covers nothing), as a
