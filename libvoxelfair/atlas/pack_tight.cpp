@@ -12,11 +12,11 @@
 #include <cstring>
 #include <functional>
 #include <mutex>
-#include <numeric>
 #include <optional>
 #include <thread>
 #include <tuple>
 #include <unordered_map>
+#include <utility>
 
 namespace voxelfair {
 namespace {
@@ -253,13 +253,15 @@ TightPacking packTight(const ChartMasks &masks, int side, int height, bool allow
     placements.assign(charts, ChartPlacement{});
     auto area = [&](uint32_t c) { return int64_t(masks.charts[c].width) * masks.charts[c].height; };
     auto longSide = [&](uint32_t c) { return std::max(masks.charts[c].width, masks.charts[c].height); };
+    // Longest side first, then largest area, then chart number: sorted on keys made once (a
+    // terrain's 800k charts: the sort through the masks took 14% of its atlas).
+    std::vector<std::pair<uint64_t, uint32_t>> keyed(charts);
+    for (uint32_t c = 0; c < charts; ++c)  // sides < 2^15, areas < 2^30: ascending keys, descending sizes
+        keyed[c] = {~((uint64_t(longSide(c)) << 32) | uint64_t(area(c))), c};
+    std::sort(keyed.begin(), keyed.end());
     std::vector<uint32_t> order(charts);
-    std::iota(order.begin(), order.end(), 0u);
-    std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
-        if (longSide(a) != longSide(b))
-            return longSide(a) > longSide(b);
-        return area(a) != area(b) ? area(a) > area(b) : a < b;
-    });
+    for (size_t i = 0; i < charts; ++i)
+        order[i] = keyed[i].second;
 
     // Small charts go in as their bounding boxes, in two turns. Where the search for a box size
     // ended is a lower bound for the next box of that size, as the atlas only fills up: each
