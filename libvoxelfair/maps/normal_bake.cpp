@@ -10,7 +10,6 @@
 #include "maps/texel_frames.h"
 #include "maps/uv_face_index.h"
 #include "maps/normal_gutter.h"
-#include "maps/source_cover.h"
 #include "base/simd_variant.h"
 
 #include <algorithm>

@@ -13,14 +13,9 @@
 // the triangle across the edge the projection left that one by (the walk's first step: a row
 // crosses a source triangle every few texels) and the triangle under the texel's UV; else the
 // walk from the previous texel's triangle (for a triangle's first texel, from the one under its
-// UV). The source's interpolated vertex normal n there is what the texel encodes. Most texel
-// centres (83% on the benchmark's sphere) skip the search: the mapping reversed
-// (source_cover.h), each source vertex carried once onto the target and each source triangle
-// whose corners land on one target chart rasterised in the target's UV space, gives them the
-// source normal interpolated over that triangle (a linear stand-in for the projection, exact at
-// its corners); the search's faces-under-UV fill then takes only the faces that cover nothing.
-// The target triangle under the texel gives the shading frame a glTF / Blender / MikkTSpace
-// pixel shader rebuilds there: N and T interpolated from the target's vertex normals
+// UV). The source's interpolated vertex normal n there is what the texel encodes. The target
+// triangle under the texel gives the shading frame a glTF / Blender /
+// MikkTSpace pixel shader rebuilds there: N and T interpolated from the target's vertex normals
 // and MikkTSpace tangents (mikktspace.h) and normalised, B = w * cross(N, T). The texel stores
 // the unit solution of x T + y B + z N = n (the exact inverse of that shader), as (c + 1) / 2 in
 // RGB: +X along increasing u, +Y along increasing v (OpenGL / glTF / Blender convention: v up,

@@ -82,27 +82,24 @@ NormalMap bakeNormalMapWork(const NormalBakeMesh &source, const NormalBakeMesh &
     out.width = width;
     out.height = height;
 
-    // Set-up as tasks the threads take in turn (the sorted source first: the walk, the cover,
-    // the source's bands and its UV grid wait for it); each builds its own structure. In this
-    // order two threads split them about evenly (callgrind, the benchmark's sphere: the source's
-    // adjacency and walk 127 M then the tangents 85 M on one; the sorted source 20 M, the cover
-    // 119 M, the source's bands 28 M, the target's 7 M and the grid 22 M on the other).
+    // Set-up as tasks the threads take in turn (the sorted source first: the walk, the source's
+    // bands and its UV grid wait for it); each builds its own structure.
     std::unique_ptr<SortedSource> sorted;
     std::unique_ptr<UvFaceGrid> grid;
     std::unique_ptr<SurfaceWalk> walk;
-    FaceBands bands, sourceBands, coverBands;
-    SourceCover cover;
+    FaceBands bands, sourceBands;
     ByteBuffer state;  // each band clears its own rows (the pages' first touch on its thread)
     {
         std::promise<void> sortedDone;
         const std::shared_future<void> sortedReady = sortedDone.get_future().share();
-        runBands(8, options.threads, [&](size_t task) {
+        runBands(7, options.threads, [&](size_t task) {
             switch (task) {
             case 0:
                 sorted = std::make_unique<SortedSource>(source, width, height);
                 sortedDone.set_value();
                 break;
-            case 1: {
+            case 1: out.cornerTangents = targetTangents(target); break;
+            case 2: {
                 // The adjacency of the source in its own order (its vertices' order, near in
                 // memory: twice as fast as in the atlas' order), renumbered.
                 const std::vector<uint32_t> original =
@@ -119,12 +116,7 @@ NormalMap bakeNormalMapWork(const NormalBakeMesh &source, const NormalBakeMesh &
                                                      source.faceCount, source.vertexCount, opposite.data());
                 break;
             }
-            case 2:
-                sortedReady.wait();
-                cover = coverSource(sorted->mesh, target, width, height);
-                coverBands = faceBands(cover.mesh, width, height, kBandRows);
-                break;
-            case 3: out.cornerTangents = targetTangents(target); break;
+            case 3: out.rgba.resize(texels * 4); break;  // unwritten: the bands write every texel
             case 4:
                 sortedReady.wait();
                 sourceBands = faceBands(sorted->mesh, width, height, kBandRows);
@@ -133,11 +125,10 @@ NormalMap bakeNormalMapWork(const NormalBakeMesh &source, const NormalBakeMesh &
                 state.resize(texels);
                 bands = faceBands(target, width, height, kBandRows);
                 break;
-            case 6:
+            default:
                 sortedReady.wait();
                 grid = std::make_unique<UvFaceGrid>(*sorted, width, height);
                 break;
-            default: out.rgba.resize(texels * 4); break;  // unwritten: the bands write every texel
             }
         });
     }
@@ -158,7 +149,6 @@ NormalMap bakeNormalMapWork(const NormalBakeMesh &source, const NormalBakeMesh &
         TexelBatch batch;
         SurfaceWalk::Marks marks;
         std::vector<OverlapRow> overlaps;
-        CoverRows cover;
     };
     std::vector<Scratch> scratch(size_t(bandThreads(options.threads, bandCount)));
     runWorkerBands(bandCount, options.threads, [&](size_t band, int worker) {
@@ -175,14 +165,8 @@ NormalMap bakeNormalMapWork(const NormalBakeMesh &source, const NormalBakeMesh &
         TexelBatch &batch = scratch[size_t(worker)].batch;
         SurfaceWalk::Marks &marks = scratch[size_t(worker)].marks;
         under.assign(size_t(r1 - r0) * size_t(width), UINT32_MAX);
-        // Only the source faces that cover nothing (source_cover.h): where a texel's search runs,
-        // the cover leaves a gap, and a covering face is rarely the one under it.
         for (uint32_t i = sourceBands.start[band]; i < sourceBands.start[band + 1]; ++i)
-            if (!cover.covers(sourceBands.faces[i]))
-                fillFacesUnder(sorted->mesh, sourceBands.faces[i], width, height, r0, r1, under.data());
-        CoverRows &covered = scratch[size_t(worker)].cover;
-        coverFaces(cover, walk->cornerNormals(0), coverBands.faces.data() + coverBands.start[band],
-                   coverBands.start[band + 1] - coverBands.start[band], width, height, r0, r1, covered);
+            fillFacesUnder(sorted->mesh, sourceBands.faces[i], width, height, r0, r1, under.data());
         // Two passes over the band's triangles: their texel centres first, then the texels they
         // merely overlap that no centre claimed (the first triangle in the band's order that
         // overlaps one claims it, as in a single pass, but no overlap is baked only to be
@@ -277,16 +261,6 @@ NormalMap bakeNormalMapWork(const NormalBakeMesh &source, const NormalBakeMesh &
                         return true;
                     }
                     uint32_t from = hitFace != UINT32_MAX ? hitFace : start;
-                    if (from == UINT32_MAX) {
-                        // The nearest source face the cover puts on this row, within 8 texels.
-                        const uint32_t *const coverRow = covered.face.data() + size_t(y - r0) * size_t(width);
-                        for (int k = 1; k <= 8 && from == UINT32_MAX; ++k) {
-                            if (x - k >= 0 && coverRow[x - k] != UINT32_MAX)
-                                from = coverRow[x - k];
-                            else if (x + k < width && coverRow[x + k] != UINT32_MAX)
-                                from = coverRow[x + k];
-                        }
-                    }
                     if (from == UINT32_MAX &&
                         (from = grid->find(double(l0) * q[0] + double(l1) * q[1] + double(l2) * q[2])) == UINT32_MAX)
                         return false;
@@ -362,27 +336,6 @@ NormalMap bakeNormalMapWork(const NormalBakeMesh &source, const NormalBakeMesh &
                         bool tried = false;          // texel x is known not to be on hitFace,
                         uint32_t next = UINT32_MAX;  // and left it for this face
                         for (int x = zl; x <= zr;) {
-                            {
-                                // A run of texels the source's triangles cover (source_cover.h).
-                                const size_t at = size_t(y - r0) * size_t(width);
-                                const uint32_t *const coverFace = covered.face.data() + at;
-                                if (coverFace[x] != UINT32_MAX) {
-                                    int end = x + 1;
-                                    while (end <= zr && coverFace[end] != UINT32_MAX)
-                                        ++end;
-                                    const int count = end - x;
-                                    batch.setRun(x, count, float(l1), float(l2), float(a1), float(a2),
-                                                 covered.nx.data() + at + size_t(x), covered.ny.data() + at + size_t(x),
-                                                 covered.nz.data() + at + size_t(x));
-                                    if (first)
-                                        rowFace = coverFace[x], first = false;
-                                    hitFace = coverFace[end - 1];
-                                    l1 += count * a1, l2 += count * a2;
-                                    x = end;
-                                    tried = false;
-                                    continue;
-                                }
-                            }
 #if VOXELFAIR_SSE2
                             // 4 texels at once (those past zr ignored) against the face of the texel
                             // before them (the fast path), else, when the first is not on it, against

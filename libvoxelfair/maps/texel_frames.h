@@ -129,38 +129,6 @@ struct TexelBatch {
         const size_t i = size_t(base + x);
         l1[i] = w1, l2[i] = w2, nx[i] = n.x, ny[i] = n.y, nz[i] = n.z, keep[i] = 1;
     }
-    // Texels x .. x + count - 1 of the current row, kept, with weights w1 + j a1, w2 + j a2 (in
-    // floats) and the normals nx[j], ny[j], nz[j] (j < count; the arrays readable up to a multiple
-    // of 4 past count). The lanes up to the next multiple of 4 past count are written too, kept:
-    // the caller sets them again (a row's centres are all set) or they lie past the row's end.
-    void setRun(int x, int count, float w1, float w2, float a1, float a2, const float *nx, const float *ny,
-                const float *nz) {
-        const size_t i = size_t(base + x);
-        float *const L1 = &l1[i], *const L2 = &l2[i], *const X = &this->nx[i], *const Y = &this->ny[i],
-                     *const Z = &this->nz[i];
-        uint8_t *const K = &keep[i];
-#if VOXELFAIR_SSE2
-        const __m128 step = _mm_setr_ps(0.0f, 1.0f, 2.0f, 3.0f), four = _mm_set1_ps(4.0f);
-        __m128 t = step;
-        const __m128 b1 = _mm_set1_ps(w1), b2 = _mm_set1_ps(w2), s1 = _mm_set1_ps(a1), s2 = _mm_set1_ps(a2);
-        for (int j = 0; j < count; j += 4, t = _mm_add_ps(t, four)) {
-            const size_t k = size_t(j);
-            _mm_storeu_ps(L1 + k, _mm_add_ps(b1, _mm_mul_ps(t, s1)));
-            _mm_storeu_ps(L2 + k, _mm_add_ps(b2, _mm_mul_ps(t, s2)));
-            _mm_storeu_ps(X + k, _mm_loadu_ps(nx + k));
-            _mm_storeu_ps(Y + k, _mm_loadu_ps(ny + k));
-            _mm_storeu_ps(Z + k, _mm_loadu_ps(nz + k));
-            const uint32_t ones = 0x01010101u;
-            std::memcpy(K + k, &ones, 4);
-        }
-#else
-        for (int j = 0; j < count; ++j) {
-            const size_t k = size_t(j);
-            L1[k] = w1 + float(j) * a1, L2[k] = w2 + float(j) * a2;
-            X[k] = nx[k], Y[k] = ny[k], Z[k] = nz[k], K[k] = 1;
-        }
-#endif
-    }
 #if VOXELFAIR_SSE2
     // Texels x .. x + 3 of the current row, the first `kept` (0 to 4) of them kept, the others
     // not (they are set again later, or lie past the row's end: the next row starts there).

@@ -4,7 +4,6 @@
 #include "maps/face_value_bake.h"
 #include "maps/mikktspace.h"
 #include "maps/normal_bake.h"
-#include "maps/source_cover.h"
 
 #include <gtest/gtest.h>
 
@@ -372,65 +371,5 @@ TEST(NormalBake, OnABlockAtlasEveryBlockAChartTouchesIsFilledAsTheBaseColoursIs)
         EXPECT_EQ(mixedBlocks(blocks.rgba, blocks.width, blocks.height, opaque), 0);
         const FaceValueImage plain = bakeFaceValues(mesh, values.data(), options.width, 64, 1, {0, 0, 0}, false);
         EXPECT_GT(mixedBlocks(plain.rgba, plain.width, plain.height, opaque), 0);
-    }
-}
-
-// The bake's reversed mapping (source_cover.h): a fine grid over a coarse one of the same plane
-// (random orientation, UV map and a small offset along the normal) with the same UV map carries
-// each source vertex to the target point with its own UV, so every covering face keeps its UVs
-// and its texels get its (constant) normal; a source facing away from the target covers nothing.
-TEST(SourceCover, OnOnePlaneEveryFaceKeepsItsUvsAndASourceFacingAwayCoversNothing) {
-    std::mt19937 rng(1313);
-    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
-    for (int trial = 0; trial < 8; ++trial) {
-        const glm::mat3 R = randomRotation(rng);
-        const glm::mat2 A = randomUvMap(rng, trial % 2 == 1);
-        const glm::vec2 c(0.5f, 0.5f);
-        const PlaneGrid fine = planeGrid(21, R, 0.01f * u(rng) * R[2], A, c),
-                        coarse = planeGrid(5, R, glm::vec3(0), A, c);
-        const int side = 256;
-        const SourceCover cover = coverSource(view(fine), view(coarse), side, side);
-        const size_t faces = fine.triangles.size() / 3;
-        size_t counted = 0;
-        for (uint32_t f = 0; f < faces; ++f) {
-            // A face off the grid's border covers (a border vertex's ray may meet the target
-            // just past its edge).
-            bool border = false;
-            for (int k = 0; k < 3; ++k) {
-                const uint32_t v = fine.triangles[3 * f + uint32_t(k)], i = v % 21, j = v / 21;
-                border = border || i == 0 || j == 0 || i == 20 || j == 20;
-            }
-            EXPECT_TRUE(border || cover.covers(f)) << "trial " << trial << " face " << f;
-            if (!cover.covers(f))
-                continue;
-            ++counted;
-            for (int k = 0; k < 3; ++k) {
-                const glm::vec2 d = cover.uv[3 * f + uint32_t(k)] - fine.wedgeUv[3 * f + uint32_t(k)];
-                ASSERT_LT(glm::length(d), 1e-4f) << "trial " << trial << " face " << f;
-            }
-        }
-        EXPECT_EQ(counted, cover.coveringFaces);
-        // The texels of one band: each covered one carries the plane's normal.
-        std::vector<uint32_t> all(faces);
-        for (uint32_t f = 0; f < faces; ++f)
-            all[f] = f;
-        std::vector<glm::vec3> corners;
-        for (uint32_t v : fine.triangles)
-            corners.push_back(fine.normals[v]);
-        CoverRows rows;
-        coverFaces(cover, corners.data(), all.data(), all.size(), side, side, 96, 160, rows);
-        size_t covered = 0;
-        for (size_t i = 0; i < size_t(64 * side); ++i)
-            if (rows.face[i] != UINT32_MAX) {
-                ++covered;
-                ASSERT_TRUE(cover.covers(rows.face[i]));
-                ASSERT_LT(glm::length(glm::vec3(rows.nx[i], rows.ny[i], rows.nz[i]) - R[2]), 1e-4f);
-            }
-        EXPECT_GT(covered, 0u) << "trial " << trial;
-
-        PlaneGrid away = fine;
-        for (glm::vec3 &n : away.normals)
-            n = -n;
-        EXPECT_EQ(coverSource(view(away), view(coarse), side, side).coveringFaces, 0u) << "trial " << trial;
     }
 }
