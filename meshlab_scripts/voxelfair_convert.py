@@ -206,7 +206,7 @@ def pipeline_script(args, texture, normal, house=None, materials=None):
         "MODE": "1" if args.fairing == "constrained" else "0",
         "LAMBDA": repr(args.lambda_), "PASSES": str(args.passes),
         "PACKING": "1" if args.packing == "paper" else "0",
-        "TEXELS_PER_VOXEL": repr(args.texels_per_voxel),
+        "TEXELS_PER_VOXEL": repr(args.texels_per_voxel), "MAX_TEXTURE_SIZE": str(args.max_texture_size),
         "COLOURS": "1" if args.colours == "smoothed" else "0",
         "TEXTURE_FILE": str(texture), "DECIMATION": repr(args.decimate), "NORMAL_FILE": str(normal),
         "HOUSE_FILE": str(house or ""), "NORMAL_LEVEL": "1" if args.normal_map_resolution == "half" else "0",
@@ -445,6 +445,9 @@ def main():
     parser.add_argument("--lambda", dest="lambda_", type=float, default=4.0 / 3.0, help="fairing lambda (default 4/3)")
     parser.add_argument("--passes", type=int, default=1, help="fairing passes (default 1)")
     parser.add_argument("--texels-per-voxel", type=float, default=8.0, help="texture resolution (default 8)")
+    parser.add_argument("--max-texture-size", type=int, default=4096,
+                        help="largest texture side, a power of two from 16 to 16384 (default 4096); a model that "
+                             "needs more at --texels-per-voxel gets a lower density (doc/limits.md: large models)")
     parser.add_argument("--packing", choices=("tight", "paper"), default="tight", help="atlas packer (default tight)")
     parser.add_argument("--colours", choices=("crisp", "smoothed"), default="crisp", help="texture colours (default crisp)")
     parser.add_argument("--decimate", type=float, default=0.5,
@@ -487,6 +490,8 @@ def main():
                      "copy back its parts and maps); drop --no-normal-map, or use --decimate for one mesh without it")
     if args.passes < 1 or args.texels_per_voxel <= 0:
         sys.exit("voxelfair: --passes must be at least 1 and --texels-per-voxel positive")
+    if not 16 <= args.max_texture_size <= 16384 or args.max_texture_size & (args.max_texture_size - 1):
+        sys.exit("voxelfair: --max-texture-size must be a power of two from 16 to 16384")
     if args.palette and not Path(args.palette).is_file():
         sys.exit(f"voxelfair: {args.palette}: no such palette file")
     # Absolute, so the texture goes where the meshes go: the filter resolves a relative texture

@@ -230,6 +230,28 @@ class ConvertWrapper(unittest.TestCase):
                                     str(self.work / "half" / "tank.glb")], capture_output=True, text=True)
         self.assertIn("0 errors, 0 warnings", validator.stdout)
 
+    def test_a_smaller_largest_texture_lowers_the_density_to_fit_it(self):
+        import struct
+        def size(png):
+            return struct.unpack(">II", png.read_bytes()[16:24])
+        code, output = wrapper(self.work, "models/tank.vxl", "-o", "free", "--formats", "glb")
+        self.assertEqual(code, 0, output)
+        free = size(self.work / "free" / "tank_texture.png")
+        self.assertGreater(max(free), 128, output)  # the example needs more than 128 at 8 texels per voxel
+        code, output = wrapper(self.work, "models/tank.vxl", "-o", "capped", "--formats", "glb",
+                               "--max-texture-size", "128")
+        self.assertEqual(code, 0, output)
+        self.assertEqual(size(self.work / "capped" / "tank_texture.png"), (128, 128))
+        self.assertIn("reduced to fit the maximum size", output)
+        validator = subprocess.run(["node", str(HERE.parent.parent / "tools" / "gltf_validate.js"),
+                                    str(self.work / "capped" / "tank.glb")], capture_output=True, text=True)
+        self.assertIn("0 errors, 0 warnings", validator.stdout)
+        for bad in ("100", "8", "32768"):
+            code, output = wrapper(self.work, "models/tank.vxl", "-o", "bad", "--max-texture-size", bad)
+            self.assertNotEqual(code, 0, bad)
+            self.assertIn("--max-texture-size must be a power of two", output)
+        self.assertFalse((self.work / "bad").exists())
+
     def test_without_decimation_or_with_no_normal_map_no_normal_map_is_written(self):
         for options in (["--decimate", "1"], ["--no-normal-map"]):
             code, output = wrapper(self.work, "models/tank.vxl", "-o", "plain", "--formats", "obj", *options)

@@ -38,6 +38,7 @@ std::string pipelineScript(const std::string &dir, const std::string &texture, d
                                                           {"@PASSES@", "1"},
                                                           {"@PACKING@", "0"},
                                                           {"@TEXELS_PER_VOXEL@", "8"},
+                                                          {"@MAX_TEXTURE_SIZE@", "4096"},
                                                           {"@COLOURS@", "0"},
                                                           {"@TEXTURE_FILE@", texture},
                                                           {"@DECIMATION@", std::to_string(decimation)},
