@@ -1,6 +1,7 @@
 #include "atlas/bake.h"
 
 #include "atlas/texel_raster.h"
+#include "base/byte_words.h"
 #include "base/parallel_bands.h"
 #include "base/short_fill.h"
 #include "base/error.h"
@@ -191,8 +192,7 @@ void fillBlockRow(Canvas &canvas, int y) {
             uint64_t low = 0, high = 0;
             std::memcpy(&low, &canvas.filled[canvas.index(x, y)], 8);
             std::memcpy(&high, &canvas.filled[canvas.index(x, y + 1)], 8);
-            constexpr uint64_t kAll = 0x0101010101010101u;
-            if ((low | high) == 0 || (low == kAll && high == kAll)) {
+            if ((low | high) == 0 || (low == kAllBytesOne && high == kAllBytesOne)) {
                 x += 6;
                 continue;
             }

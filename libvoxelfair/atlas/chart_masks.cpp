@@ -1,13 +1,13 @@
 #include "atlas/chart_masks.h"
 
 #include "atlas/texel_raster.h"
+#include "base/byte_words.h"
 #include "base/parallel_bands.h"
 #include "base/short_fill.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -150,23 +150,12 @@ bool rasterizeBlocks(const AtlasCharts &charts, size_t c, double origin, int w, 
     // is first seen going up, then going down. Eight blocks (bytes of 0 or 1) at a time.
     std::fill(bottom, bottom + width, int16_t(height));
     std::fill(top, top + width, int16_t(-1));
-    const size_t words = (size_t(width) + 7) / 8, whole = size_t(width) / 8;
-    auto load = [&](int y, size_t k) {
-        const uint8_t *p = bits + size_t(y) * size_t(width) + 8 * k;
-        uint64_t v = 0;
-        if (k < whole)
-            std::memcpy(&v, p, 8);
-        else
-            for (size_t i = 0; i < size_t(width) % 8; ++i)
-                v |= uint64_t(p[i]) << (8 * i);
-        return v;
-    };
-    // Set bytes of a word of 0/1 bytes: their sum, gathered in the top byte.
-    auto count = [](uint64_t v) { return size_t((v * 0x0101010101010101u) >> 56); };
+    const size_t words = (size_t(width) + 7) / 8;
+    auto load = [&](int y, size_t k) { return byteWord(bits + size_t(y) * size_t(width), size_t(width), k); };
     // The bytes of `fresh` (columns 8k + byte) not seen before in the pass: their extent is row y.
     auto note = [](uint64_t fresh, size_t k, int16_t y, int16_t *extent) {
         for (; fresh != 0; fresh &= fresh - 1)
-            extent[8 * k + size_t(__builtin_ctzll(fresh) / 8)] = y;
+            extent[8 * k + size_t(lowestSetByte(fresh))] = y;
     };
     std::vector<uint64_t> &seen = part.seen;
     seen.assign(words, 0);
@@ -177,13 +166,13 @@ bool rasterizeBlocks(const AtlasCharts &charts, size_t c, double origin, int w, 
             const uint64_t v = load(y, k);
             if (v == 0)
                 continue;
-            set += count(v);
+            set += setByteCount(v);
             if (l < 0)
-                l = int(8 * k) + __builtin_ctzll(v) / 8;
-            r = int(8 * k) + (63 - __builtin_clzll(v)) / 8;
+                l = int(8 * k) + lowestSetByte(v);
+            r = int(8 * k) + highestSetByte(v);
             const uint64_t fresh = v & ~seen[k];
             seen[k] |= v;
-            columns += count(fresh);
+            columns += setByteCount(fresh);
             note(fresh, k, int16_t(y), bottom);
         }
         left[y] = int16_t(l >= 0 ? l : width);
@@ -198,7 +187,7 @@ bool rasterizeBlocks(const AtlasCharts &charts, size_t c, double origin, int w, 
             if (fresh == 0)
                 continue;
             seen[k] |= v;
-            columns -= count(fresh);
+            columns -= setByteCount(fresh);
             note(fresh, k, int16_t(y), top);
         }
     part.bitsFirst.push_back(first);

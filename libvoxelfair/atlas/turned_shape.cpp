@@ -1,5 +1,7 @@
 #include "atlas/turned_shape.h"
 
+#include "base/byte_words.h"
+
 #include <algorithm>
 #include <cstddef>
 #include <cstring>
@@ -36,21 +38,21 @@ void sortSpans(TurnedShape &s) {
 // The first c in [from, right] where the bitmap byte row[c * stride] (0 or 1) is set (`set`) or
 // not, right + 1 if none. Along a stored row (stride 1 or -1) eight bytes at a time.
 int nextByte(const uint8_t *row, ptrdiff_t stride, int from, int right, bool set) {
-    const uint64_t flip = set ? 0 : 0x0101010101010101u;  // set bytes of the word: the ones sought
+    const uint64_t flip = set ? 0 : kAllBytesOne;  // set bytes of the word: the ones sought
     int c = from;
     if (stride == 1) {
         for (; c + 8 <= right + 1; c += 8) {
             uint64_t v;
             std::memcpy(&v, row + c, 8);
             if ((v ^= flip) != 0)
-                return c + __builtin_ctzll(v) / 8;
+                return c + lowestSetByte(v);
         }
     } else if (stride == -1) {  // c runs down through memory: the word ending at row - c
         for (; c + 8 <= right + 1; c += 8) {
             uint64_t v;
             std::memcpy(&v, row - c - 7, 8);
             if ((v ^= flip) != 0)
-                return c + (__builtin_clzll(v) - 7) / 8;
+                return c + 7 - highestSetByte(v);
         }
     }
     while (c <= right && (row[c * stride] != 0) != set)
@@ -65,19 +67,16 @@ int nextByte(const uint8_t *row, ptrdiff_t stride, int from, int right, bool set
 void findColumnRuns(const uint8_t *bits, int w, int h, ColumnRuns &out) {
     out.found.clear();
     out.start.assign(size_t(w), 0);
-    const size_t words = (size_t(w) + 7) / 8, whole = size_t(w) / 8;
+    const size_t words = (size_t(w) + 7) / 8;
     out.below.assign(words, 0);  // the row below's words (none below row 0)
     for (int y = 0; y <= h; ++y)
         for (size_t k = 0; k < words; ++k) {
-            uint64_t now = 0;  // none above the top row; the last word padded with zeros
-            if (y < h && k < whole)
-                std::memcpy(&now, bits + size_t(y) * size_t(w) + 8 * k, 8);
-            else if (y < h)
-                std::memcpy(&now, bits + size_t(y) * size_t(w) + 8 * k, size_t(w) % 8);
+            // None above the top row; the last word padded with zeros.
+            const uint64_t now = y < h ? byteWord(bits + size_t(y) * size_t(w), size_t(w), k) : 0;
             const uint64_t changed0 = now ^ out.below[k];
             out.below[k] = now;
             for (uint64_t changed = changed0; changed != 0; changed &= changed - 1) {
-                const int byte = __builtin_ctzll(changed) / 8;
+                const int byte = lowestSetByte(changed);
                 const size_t x = 8 * k + size_t(byte);
                 if (now >> (8 * byte) & 1)
                     out.start[x] = int16_t(y);

@@ -6,12 +6,10 @@
 // (e.g. Boost.Container's default_init_t, C++20 std::make_unique_for_overwrite).
 #pragma once
 
-#include <cstdint>
 #include <memory>
 #include <new>
 #include <type_traits>
 #include <utility>
-#include <vector>
 
 namespace voxelfair {
 

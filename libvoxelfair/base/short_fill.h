@@ -6,6 +6,8 @@
 // whole (every byte 1), eight bytes at a time, and the rows of a box that are not.
 #pragma once
 
+#include "base/byte_words.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -17,7 +19,7 @@ inline void fillBytes(uint8_t *p, uint8_t value, size_t n) {
         std::memset(p, value, n);
         return;
     }
-    const uint64_t v8 = uint64_t(value) * 0x0101010101010101u;
+    const uint64_t v8 = uint64_t(value) * kAllBytesOne;
     if (n >= 8) {
         std::memcpy(p, &v8, 8);
         std::memcpy(p + n - 8, &v8, 8);
@@ -41,12 +43,12 @@ inline bool allOnes(const uint8_t *p, size_t n) {
         for (size_t i = 0; i + 8 < n; i += 8) {
             uint64_t v;
             std::memcpy(&v, p + i, 8);
-            if (v != 0x0101010101010101u)
+            if (v != kAllBytesOne)
                 return false;
         }
         uint64_t v;
         std::memcpy(&v, p + n - 8, 8);
-        return v == 0x0101010101010101u;
+        return v == kAllBytesOne;
     }
     if (n >= 4) {
         uint32_t a, b;

@@ -126,7 +126,7 @@ void fillNormalGutter(int width, int height, uint8_t *state, uint8_t *rgba, int 
     const size_t bands = size_t((height + kBlockBandRows - 1) / kBlockBandRows);
     runBands(bands, threads, [&](size_t band) {
         const int r0 = int(band) * kBlockBandRows, r1 = std::min(height, r0 + kBlockBandRows);
-        constexpr uint64_t kAll = 0x0101010101010101ull * kTexelPainted;
+        constexpr uint64_t kAll = kAllBytesOne * kTexelPainted;
         for (int y = r0; y < r1; y += 2) {
             const uint8_t *const row0 = &state[size_t(y) * size_t(width)];
             const uint8_t *const row1 = y + 1 < height ? row0 + width : nullptr;

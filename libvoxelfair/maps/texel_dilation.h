@@ -13,6 +13,7 @@
 // others run, so the result does not depend on the thread count.
 #pragma once
 
+#include "base/byte_words.h"
 #include "base/parallel_bands.h"
 
 #include <algorithm>
@@ -23,18 +24,6 @@
 namespace voxelfair {
 
 constexpr uint8_t kTexelPainted = 1;
-
-// The index of the lowest set bit of a non-zero word.
-inline int lowestSetBit(uint64_t word) {
-#if defined(__GNUC__) || defined(__clang__)
-    return __builtin_ctzll(word);
-#else
-    int i = 0;
-    while ((word >> i & 1) == 0)
-        ++i;
-    return i;
-#endif
-}
 
 template <class Fill>
 void dilateTexels(int width, int height, uint8_t *state, int rings, int threads, Fill &&fill) {
