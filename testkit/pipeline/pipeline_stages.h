@@ -15,6 +15,7 @@
 #include "attributes/triangulate.h"
 #include "attributes/vertex_colours.h"
 #include "attributes/vertex_normals.h"
+#include "base/parallel_bands.h"
 #include "fairing/constrained_fairing.h"
 #include "fairing/lanczos_fairing.h"
 #include "fairing/voxel_size.h"
@@ -31,6 +32,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <exception>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -277,32 +279,66 @@ struct Attributes {
     size_t triangleCount() const { return triangleQuad.size(); }
 };
 
-inline Attributes smoothAttributes(const QuadMesh &mesh) {
+// On two threads (`threads`: 0, one per hardware thread; 1, one), each step writing its own
+// arrays: the quads' normals, then the vertex normals, beside the vertex polygons, the vertex
+// colours and the triangles. The same attributes for any count.
+inline Attributes smoothAttributes(const QuadMesh &mesh, int threads = 0) {
     const size_t quads = mesh.quadCount(), vertices = mesh.vertexCount();
     Attributes a;
     a.quadNormals.resize(quads);
     a.vertexNormals.resize(vertices);
-    PolygonMesh view = mesh.view();
-    computePolygonNormals(view, a.quadNormals.data());
-    const CsrAdjacency polygonsOf = buildVertexPolygons(view);  // for the normals and the colours
-    computeVertexNormals(view, polygonsOf, a.quadNormals.data(), a.vertexNormals.data());
-
-    std::vector<glm::vec4> quadColours(quads), vertexColours(vertices);
-    for (size_t q = 0; q < quads; ++q)
-        quadColours[q] = glm::vec4(glm::vec3(mesh.quadColours[q]), 255.0f);
-    view.polygonColours = quadColours.data();
-    computeVertexColours(view, polygonsOf, vertexColours.data());
     a.vertexColours.resize(vertices);
-    for (size_t v = 0; v < vertices; ++v)
-        a.vertexColours[v] = glm::u8vec3(glm::clamp(glm::round(glm::vec3(vertexColours[v])), 0.0f, 255.0f));
-
-    const size_t triangles = countFanTriangles(view);
-    a.triangles.resize(3 * triangles);
-    a.triangleQuad.resize(triangles);
-    triangulatePolygons(view, a.triangles.data(), a.triangleQuad.data());
-    a.triangleColours.resize(triangles);
-    for (size_t t = 0; t < triangles; ++t)
-        a.triangleColours[t] = mesh.quadColours[a.triangleQuad[t]];
+    CsrAdjacency polygonsOf;  // for the normals and the colours
+    const int workers = bandThreads(threads, 2);
+    // The units throw MeshError on invalid polygons: caught in their band, rethrown here.
+    std::exception_ptr failed[2];
+    auto guarded = [&](auto &&step) {
+        return [&failed, &step](size_t band) {
+            try {
+                step(band);
+            } catch (...) {
+                failed[band] = std::current_exception();
+            }
+        };
+    };
+    auto rethrow = [&failed] {
+        for (const std::exception_ptr &e : failed)
+            if (e)
+                std::rethrow_exception(e);
+    };
+    runBands(2, workers, guarded([&](size_t band) {
+                 const PolygonMesh view = mesh.view();
+                 if (band == 1) {
+                     computePolygonNormals(view, a.quadNormals.data());
+                     return;
+                 }
+                 polygonsOf = buildVertexPolygons(view);
+                 std::vector<glm::vec4> quadColours(quads), vertexColours(vertices);
+                 for (size_t q = 0; q < quads; ++q)
+                     quadColours[q] = glm::vec4(glm::vec3(mesh.quadColours[q]), 255.0f);
+                 PolygonMesh coloured = view;
+                 coloured.polygonColours = quadColours.data();
+                 computeVertexColours(coloured, polygonsOf, vertexColours.data());
+                 for (size_t v = 0; v < vertices; ++v)
+                     a.vertexColours[v] =
+                         glm::u8vec3(glm::clamp(glm::round(glm::vec3(vertexColours[v])), 0.0f, 255.0f));
+             }));
+    rethrow();
+    runBands(2, workers, guarded([&](size_t band) {
+                 const PolygonMesh view = mesh.view();
+                 if (band == 0) {
+                     computeVertexNormals(view, polygonsOf, a.quadNormals.data(), a.vertexNormals.data());
+                     return;
+                 }
+                 const size_t triangles = countFanTriangles(view);  // on polygons checked by the first step
+                 a.triangles.resize(3 * triangles);
+                 a.triangleQuad.resize(triangles);
+                 a.triangleColours.resize(triangles);
+                 triangulatePolygons(view, a.triangles.data(), a.triangleQuad.data());
+                 for (size_t t = 0; t < triangles; ++t)
+                     a.triangleColours[t] = mesh.quadColours[a.triangleQuad[t]];
+             }));
+    rethrow();
     return a;
 }
 
