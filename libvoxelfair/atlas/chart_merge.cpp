@@ -3,6 +3,7 @@
 #include "atlas/chart_overlap.h"
 #include "atlas/edge_adjacency.h"
 #include "atlas/seed_plane.h"
+#include "base/parallel_bands.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,6 +18,9 @@ namespace voxelfair {
 namespace {
 
 constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
+
+// Fewer faces than this are merged on one thread: starting threads would cost more.
+constexpr size_t kLeastParallelFaces = 4096;
 
 // Whether an edge line of counter-clockwise triangle `t` has all of `u` on its closed outer side.
 bool separates(const glm::vec2 *t, const glm::vec2 *u) {
@@ -95,24 +99,41 @@ size_t mergeSmallCharts(const AtlasMesh &mesh, const uint32_t *opposite, const C
     const size_t faceCount = charts.faceCount();
     auto scaleOf = [&](uint32_t f) { return mesh.faceTexelScale ? mesh.faceTexelScale[f] : 1.0f; };
 
+    // Runs of charts of about equal faces, a few per thread, for the steps that take each chart
+    // (or face) alone: the set-up and the rebuilt charts, the same for any thread count.
+    const int workers = faceCount >= kLeastParallelFaces ? bandThreads(options.threads, chartCount) : 1;
+    const size_t bands = workers > 1 ? std::min<size_t>(4 * size_t(workers), chartCount) : 1;
+    std::vector<size_t> from(bands + 1, chartCount);
+    from[0] = 0;
+    for (size_t band = 1, c = 0; band < bands; ++band) {
+        while (c < chartCount && charts.chartFirstFace[c] < faceCount * band / bands)
+            ++c;
+        from[band] = c;
+    }
+
     // Each chart's faces as a list (head, tail, next), UVs per face (3f + k) in its chart's frame:
     // the chart's seed plane and origin, minus the shift `lo` that put its box at the origin.
+    // Each face's UV box is kept with its UVs (a moved face's updated when it moves).
     std::vector<uint32_t> head(chartCount), tail(chartCount), count(chartCount), next(faceCount, kNone);
     std::vector<glm::vec2> uv(3 * faceCount), lo(chartCount);
+    std::vector<Box> boxes(faceCount);
     std::vector<uint32_t> &chartOf = charts.faceChart;
-    for (size_t c = 0; c < chartCount; ++c) {
-        const uint32_t first = charts.chartFirstFace[c], end = charts.chartFirstFace[c + 1];
-        head[c] = charts.chartFaces[first];
-        tail[c] = charts.chartFaces[end - 1];
-        count[c] = end - first;
-        for (uint32_t i = first; i < end; ++i) {
-            const uint32_t f = charts.chartFaces[i];
-            if (i + 1 < end)
-                next[f] = charts.chartFaces[i + 1];
-            std::copy_n(&charts.wedgeUv[3 * size_t(i)], 3, &uv[3 * size_t(f)]);
+    runBands(bands, workers, [&](size_t band) {
+        for (size_t c = from[band]; c < from[band + 1]; ++c) {
+            const uint32_t first = charts.chartFirstFace[c], end = charts.chartFirstFace[c + 1];
+            head[c] = charts.chartFaces[first];
+            tail[c] = charts.chartFaces[end - 1];
+            count[c] = end - first;
+            for (uint32_t i = first; i < end; ++i) {
+                const uint32_t f = charts.chartFaces[i];
+                if (i + 1 < end)
+                    next[f] = charts.chartFaces[i + 1];
+                std::copy_n(&charts.wedgeUv[3 * size_t(i)], 3, &uv[3 * size_t(f)]);
+                boxes[f].add(&uv[3 * size_t(f)]);
+            }
+            lo[c] = -charts.wedgeUv[3 * size_t(first)];  // the seed's first corner projects to (0, 0)
         }
-        lo[c] = -charts.wedgeUv[3 * size_t(first)];  // the seed's first corner projects to (0, 0)
-    }
+    });
 
     // Small charts, smallest first (seed order among equals).
     std::vector<uint32_t> small;
@@ -126,10 +147,6 @@ size_t mergeSmallCharts(const AtlasMesh &mesh, const uint32_t *opposite, const C
         float cosine;
     };
     std::vector<FaceGrid> grids(chartCount);  // built when a large chart is first a candidate
-    // Each face's UV box, kept with its UVs (a moved face's updated when it moves).
-    std::vector<Box> boxes(faceCount);
-    for (size_t f = 0; f < faceCount; ++f)
-        boxes[f].add(&uv[3 * f]);
     auto faceBox = [&](uint32_t f) -> const Box & { return boxes[f]; };
     auto gridOf = [&](uint32_t a) -> FaceGrid & {
         FaceGrid &g = grids[a];
@@ -150,6 +167,24 @@ size_t mergeSmallCharts(const AtlasMesh &mesh, const uint32_t *opposite, const C
             g.insert(f, faceBox(f));
         return g;
     };
+    // On more threads, the grids of the large charts next to a small one are built beforehand,
+    // side by side (each reads its own chart only). A grid finds every face whose box meets the
+    // query's whenever it was built, so the merges are the same as with grids built on demand.
+    if (workers > 1) {
+        std::vector<uint8_t> wanted(chartCount, 0);
+        std::vector<uint32_t> gridded;
+        for (const uint32_t b : small)
+            for (uint32_t f = head[b]; f != kNone; f = next[f])
+                for (uint32_t h = 3 * f; h < 3 * f + 3; ++h) {
+                    const uint32_t o = opposite[h];
+                    const uint32_t a = o == kNoOpposite ? b : chartOf[o / 3];
+                    if (a != b && !wanted[a] && count[a] >= kGridFaces && !charts.isDegenerate(a)) {
+                        wanted[a] = 1;
+                        gridded.push_back(a);
+                    }
+                }
+        runBands(gridded.size(), workers, [&](size_t k) { gridOf(gridded[k]); });
+    }
     std::vector<uint32_t> near;
     std::vector<Candidate> candidates;
     std::vector<uint32_t> faces;
@@ -238,36 +273,47 @@ size_t mergeSmallCharts(const AtlasMesh &mesh, const uint32_t *opposite, const C
     if (merged == 0)
         return 0;
 
-    // The charts again, emptied ones left out, each re-boxed to the origin.
+    // The charts again, emptied ones left out, each re-boxed to the origin: numbered and given
+    // their first faces in order, then filled side by side.
     AtlasCharts out;
-    out.chartAxis.reserve(chartCount - merged);
-    out.chartFirstFace.reserve(chartCount - merged + 1);
-    out.chartSize.reserve(chartCount - merged);
-    out.chartFaces.reserve(faceCount);
-    out.wedgeUv.reserve(3 * faceCount);
+    const size_t kept = chartCount - merged;
+    out.chartAxis.resize(kept);
+    out.chartFirstFace.resize(kept + 1);
+    out.chartSize.resize(kept);
+    out.chartFaces.resize(faceCount);
+    out.wedgeUv.resize(3 * faceCount);
     std::vector<uint32_t> renumber(chartCount, kNone);
-    for (size_t c = 0; c < chartCount; ++c) {
+    for (size_t c = 0, n = 0, at = 0; c < chartCount; ++c) {
         if (count[c] == 0)
             continue;
-        renumber[c] = uint32_t(out.chartAxis.size());
-        out.chartAxis.push_back(charts.chartAxis[c]);
-        out.chartFirstFace.push_back(uint32_t(out.chartFaces.size()));
-        glm::vec2 least(std::numeric_limits<float>::max()), most(-std::numeric_limits<float>::max());
-        for (uint32_t f = head[c]; f != kNone; f = next[f]) {
-            out.chartFaces.push_back(f);
-            for (int k = 0; k < 3; ++k) {
-                least = glm::min(least, uv[3 * size_t(f) + k]);
-                most = glm::max(most, uv[3 * size_t(f) + k]);
-            }
-        }
-        if (charts.isDegenerate(c))  // fixed texel UVs: left as they are
-            least = glm::vec2(0.0f), most = charts.chartSize[c];
-        out.chartSize.push_back(most - least);
-        for (size_t i = out.chartFirstFace.back(); i < out.chartFaces.size(); ++i)
-            for (int k = 0; k < 3; ++k)
-                out.wedgeUv.push_back(uv[3 * size_t(out.chartFaces[i]) + k] - least);
+        renumber[c] = uint32_t(n);
+        out.chartFirstFace[n++] = uint32_t(at);
+        at += count[c];
     }
-    out.chartFirstFace.push_back(uint32_t(out.chartFaces.size()));
+    out.chartFirstFace[kept] = uint32_t(faceCount);
+    runBands(bands, workers, [&](size_t band) {
+        for (size_t c = from[band]; c < from[band + 1]; ++c) {
+            if (count[c] == 0)
+                continue;
+            const size_t n = renumber[c], first = out.chartFirstFace[n];
+            out.chartAxis[n] = charts.chartAxis[c];
+            glm::vec2 least(std::numeric_limits<float>::max()), most(-std::numeric_limits<float>::max());
+            size_t i = first;
+            for (uint32_t f = head[c]; f != kNone; f = next[f]) {
+                out.chartFaces[i++] = f;
+                for (int k = 0; k < 3; ++k) {
+                    least = glm::min(least, uv[3 * size_t(f) + k]);
+                    most = glm::max(most, uv[3 * size_t(f) + k]);
+                }
+            }
+            if (charts.isDegenerate(c))  // fixed texel UVs: left as they are
+                least = glm::vec2(0.0f), most = charts.chartSize[c];
+            out.chartSize[n] = most - least;
+            for (size_t j = first; j < i; ++j)
+                for (int k = 0; k < 3; ++k)
+                    out.wedgeUv[3 * j + size_t(k)] = uv[3 * size_t(out.chartFaces[j]) + k] - least;
+        }
+    });
     for (uint32_t &c : chartOf)
         c = renumber[c];
     charts.chartFirstFace = std::move(out.chartFirstFace);

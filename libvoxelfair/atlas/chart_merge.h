@@ -39,6 +39,9 @@ struct ChartFaceNormals {
 struct ChartMergeOptions {
     size_t mostFaces = 8;
     float minCosine = 0.5f;
+    // Threads for the set-up and the rebuilt charts, which take each chart alone (0: one per
+    // hardware thread); the merges themselves run in order on one. The same charts for any count.
+    int threads = 1;
 };
 
 // Merges small charts of `charts` (as computeCharts makes them, degenerate charts last and left

@@ -338,6 +338,7 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
     ChartMergeOptions merge;
     merge.mostFaces = options.mergeFaces;
     merge.minCosine = std::max(0.05f, std::min(options.mergeCosine, cone));
+    merge.threads = options.threads;
     out.mergedCharts = mergeSmallCharts(mesh, adjacency.opposite.data(), normals.data(), merge, out);
     // Rings and long diagonals into compact pieces (chart_split.h).
     ChartSplitOptions split;
