@@ -147,6 +147,11 @@ CrowdedFaces separateCrowdedFaces(const AtlasMesh &mesh, AtlasCharts &charts, co
         std::vector<ChartPointGrid::Point> chartPoints;
         ChartPointGrid grid;
     };
+    // A chart whose own crowded faces pass the budget ends the ordered sum at or before it: its
+    // search stops there (the sum reports only that it passed), and the searches of the charts
+    // after it, whose counts the sum never reaches, are left off.
+    std::atomic<size_t> passedAt{SIZE_MAX};
+    auto unneeded = [&](uint32_t c) { return passedAt.load(std::memory_order_relaxed) < c; };
     auto search = [&](uint32_t c, Scratch &s) {
         const uint32_t first = charts.chartFirstFace[c], end = charts.chartFirstFace[c + 1];
         bool mixed = false;
@@ -156,6 +161,8 @@ CrowdedFaces separateCrowdedFaces(const AtlasMesh &mesh, AtlasCharts &charts, co
         s.chartPoints.clear();
         glm::dvec2 p[4] = {};
         for (uint32_t i = first; i < end; ++i) {
+            if ((i - first) % 4096 == 4095 && unneeded(c))
+                return;
             inradius[i] = points(i, p);
             if (inradius[i] < kReach)
                 s.thin.push_back(i);
@@ -178,6 +185,14 @@ CrowdedFaces separateCrowdedFaces(const AtlasMesh &mesh, AtlasCharts &charts, co
                     return other != i && !separated[other] && colour(other) != colour(i);
                 });
             crowdedCount[c] += separated[i];
+            if (double(crowdedCount[c]) > budget) {
+                size_t seen = passedAt.load();
+                while (c < seen && !passedAt.compare_exchange_weak(seen, c)) {
+                }
+                return;
+            }
+            if (unneeded(c))
+                return;
         }
     };
     // The threads take the charts in order; once the faces found crowded pass the budget no
