@@ -177,10 +177,11 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
         return chart;
     };
 
-    // Orthographic projection of the last chart onto its seed plane, relative to the seed's
-    // first corner (keeps the numbers small), shifted so its box starts at the origin.
-    auto project = [&](size_t c) {
-        const size_t first = out.chartFirstFace[c], end = out.chartFaces.size();
+    // Orthographic projection of chart c (its faces up to chartFaces[end]) onto its seed plane,
+    // relative to the seed's first corner (keeps the numbers small), shifted so its box starts at
+    // the origin; returns the box's size. Writes chart c's UVs only.
+    auto projectRange = [&](size_t c, size_t end) {
+        const size_t first = out.chartFirstFace[c];
         glm::vec2 *uv = out.wedgeUv.data() + 3 * first, *uvEnd = out.wedgeUv.data() + 3 * end;
         const SeedPlane plane = seedPlane(glm::normalize(glm::dvec3(out.chartAxis[c])));
         const uint32_t *faces = out.chartFaces.data() + first;
@@ -195,8 +196,10 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
             }
         for (glm::vec2 *w = uv; w != uvEnd; ++w)
             *w -= lo;
-        out.chartSize.push_back(hi - lo);
+        return hi - lo;
     };
+    // The last chart's projection.
+    auto project = [&](size_t c) { out.chartSize.push_back(projectRange(c, out.chartFaces.size())); };
 
     // Whether chart c's projection (its faces up to chartFaces[end]) winds over itself
     // (chart_overlap.h). Reads the charts only: checks of grown charts can run side by side, each
@@ -281,13 +284,19 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
             for (size_t k = 0; k < order.size(); ++k) {
                 if (out.faceChart[order[k]] != kFree)
                     continue;
-                project(grow(order[k]));
+                grow(order[k]);
                 seedAt.push_back(k);
             }
             const size_t grown = seedAt.size();
             auto endOf = [&](size_t c) {
                 return c + 1 < out.chartFirstFace.size() ? size_t(out.chartFirstFace[c + 1]) : out.chartFaces.size();
             };
+            // The grown charts' projections, each its own UVs: side by side, one chart a band.
+            out.chartSize.resize(size_t(firstChart) + grown);
+            runBands(grown, foldWorkers, [&](size_t k) {
+                const size_t c = firstChart + k;
+                out.chartSize[c] = projectRange(c, endOf(c));
+            });
             std::vector<uint8_t> folds(grown, 0);
             std::vector<FoldScratch> scratches(static_cast<size_t>(foldWorkers));
             // One chart a band: a few large charts hold most of the work.
