@@ -3,6 +3,7 @@
 
 #include "atlas/edge_adjacency.h"
 #include "atlas/texel_raster.h"
+#include "base/parallel_bands.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,6 +15,9 @@
 
 namespace voxelfair {
 namespace {
+
+// Fewer faces than this are measured on one thread: starting threads would cost more.
+constexpr size_t kLeastParallelFaces = 4096;
 
 struct Box {
     glm::vec2 lo{std::numeric_limits<float>::max()}, hi{-std::numeric_limits<float>::max()};
@@ -41,21 +45,32 @@ size_t splitSparseCharts(const uint32_t *opposite, const ChartSplitOptions &opti
     if (!(options.minFill > 0) || charts.chartCount() == 0)
         return 0;
     const size_t chartCount = charts.chartCount();
-    // Charts to cut, found first: most models have none, and then nothing is rebuilt.
-    std::vector<uint32_t> entries;
+    // Charts to cut, found first: most models have none, and then nothing is rebuilt. Each chart
+    // is measured alone: runs of charts of about equal faces on up to options.threads threads.
     std::vector<char> sparse(chartCount, 0);
-    bool any = false;
-    for (size_t c = 0; c < chartCount; ++c) {
-        const uint32_t first = charts.chartFirstFace[c], end = charts.chartFirstFace[c + 1];
-        if (charts.isDegenerate(c) || end - first < 2)
-            continue;
-        entries.resize(end - first);
-        for (uint32_t i = first; i < end; ++i)
-            entries[i - first] = i;
-        sparse[c] = boxOf(charts, entries).fill() < double(options.minFill);
-        any = any || sparse[c];
+    const size_t faceCount = charts.chartFaces.size();
+    const int workers = faceCount >= kLeastParallelFaces ? bandThreads(options.threads, chartCount) : 1;
+    const size_t bands = workers > 1 ? std::min<size_t>(4 * size_t(workers), chartCount) : 1;
+    std::vector<size_t> from(bands + 1, chartCount);
+    from[0] = 0;
+    for (size_t band = 1, c = 0; band < bands; ++band) {
+        while (c < chartCount && charts.chartFirstFace[c] < faceCount * band / bands)
+            ++c;
+        from[band] = c;
     }
-    if (!any)
+    runBands(bands, workers, [&](size_t band) {
+        std::vector<uint32_t> entries;
+        for (size_t c = from[band]; c < from[band + 1]; ++c) {
+            const uint32_t first = charts.chartFirstFace[c], end = charts.chartFirstFace[c + 1];
+            if (charts.isDegenerate(c) || end - first < 2)
+                continue;
+            entries.resize(end - first);
+            for (uint32_t i = first; i < end; ++i)
+                entries[i - first] = i;
+            sparse[c] = boxOf(charts, entries).fill() < double(options.minFill);
+        }
+    });
+    if (std::find(sparse.begin(), sparse.end(), 1) == sparse.end())
         return 0;
 
     // Entry (position in chartFaces) of each face, and the piece each entry of the chart being
@@ -70,13 +85,13 @@ size_t splitSparseCharts(const uint32_t *opposite, const ChartSplitOptions &opti
     rebuilt.faceChart.resize(charts.faceCount());
     rebuilt.chartFaces.reserve(charts.chartFaces.size());
     rebuilt.wedgeUv.reserve(charts.wedgeUv.size());
-    // A piece (entries in chart order) becomes a chart, moved to the origin unless it is the whole chart.
-    auto emit = [&](size_t c, const std::vector<uint32_t> &piece, const Box *box) {
+    // A piece (entries in chart order) of a cut chart becomes a chart, moved to the origin.
+    auto emit = [&](size_t c, const std::vector<uint32_t> &piece, const Box &box) {
         const uint32_t chart = uint32_t(rebuilt.chartAxis.size());
         rebuilt.chartAxis.push_back(charts.chartAxis[c]);
         rebuilt.chartFirstFace.push_back(uint32_t(rebuilt.chartFaces.size()));
-        const glm::vec2 lo = box ? box->lo : glm::vec2(0.0f);
-        rebuilt.chartSize.push_back(box ? box->hi - box->lo : charts.chartSize[c]);
+        const glm::vec2 lo = box.lo;
+        rebuilt.chartSize.push_back(box.hi - box.lo);
         for (uint32_t i : piece) {
             const uint32_t f = charts.chartFaces[i];
             rebuilt.faceChart[f] = chart;
@@ -120,13 +135,22 @@ size_t splitSparseCharts(const uint32_t *opposite, const ChartSplitOptions &opti
     std::vector<std::pair<std::vector<uint32_t>, Box>> done;  // pieces in chart order, with their boxes
     for (size_t c = 0; c < chartCount; ++c) {
         const uint32_t first = charts.chartFirstFace[c], end = charts.chartFirstFace[c + 1];
+        if (!sparse[c]) {  // kept whole, as it is
+            const uint32_t chart = uint32_t(rebuilt.chartAxis.size());
+            rebuilt.chartAxis.push_back(charts.chartAxis[c]);
+            rebuilt.chartFirstFace.push_back(uint32_t(rebuilt.chartFaces.size()));
+            rebuilt.chartSize.push_back(charts.chartSize[c]);
+            rebuilt.chartFaces.insert(rebuilt.chartFaces.end(), charts.chartFaces.begin() + first,
+                                      charts.chartFaces.begin() + end);
+            rebuilt.wedgeUv.insert(rebuilt.wedgeUv.end(), charts.wedgeUv.begin() + 3 * std::ptrdiff_t(first),
+                                   charts.wedgeUv.begin() + 3 * std::ptrdiff_t(end));
+            for (uint32_t i = first; i < end; ++i)
+                rebuilt.faceChart[charts.chartFaces[i]] = chart;
+            continue;
+        }
         std::vector<uint32_t> all(end - first);
         for (uint32_t i = first; i < end; ++i)
             all[i - first] = i;
-        if (!sparse[c]) {
-            emit(c, all, nullptr);
-            continue;
-        }
         ++cut;
         for (uint32_t i : all)
             label[i] = nextLabel;
@@ -176,7 +200,7 @@ size_t splitSparseCharts(const uint32_t *opposite, const ChartSplitOptions &opti
         // Each piece keeps the chart's order (sides and parts keep it); pieces by their first faces.
         std::sort(done.begin(), done.end(), [](const auto &a, const auto &b) { return a.first[0] < b.first[0]; });
         for (const auto &[piece, box] : done)
-            emit(c, piece, &box);
+            emit(c, piece, box);
     }
     rebuilt.chartFirstFace.push_back(uint32_t(rebuilt.chartFaces.size()));
 

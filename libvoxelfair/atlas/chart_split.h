@@ -29,6 +29,9 @@ struct ChartSplitOptions {
     // diagonal). Compact charts, even with holes (a hull side around its hatches: 40-90%), are
     // never cut.
     float minFill = 0.125f;
+    // Threads measuring the charts' fill (0: one per hardware thread); the cuts themselves run
+    // on one. The same pieces for any count.
+    int threads = 1;
 };
 
 // Cuts the sparse charts of `charts` (as computeCharts makes them, degenerate charts last and

@@ -352,6 +352,7 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
     // Rings and long diagonals into compact pieces (chart_split.h).
     ChartSplitOptions split;
     split.minFill = options.minChartFill;
+    split.threads = options.threads;
     splitSparseCharts(adjacency.opposite.data(), split, out);
     return out;
 }
