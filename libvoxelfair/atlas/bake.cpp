@@ -418,12 +418,18 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
     // a texel, the atlas gave one of them a chart of its own beforehand (crowded_faces.h: points
     // closer than sqrt(2) + 0.01 texels), so the order does not matter.
     // The texel boxes of their interior points were found beside the bake (bands in face order).
-    for (const std::vector<ThinFace> &faces : thinOf)
-        for (const ThinFace &thin : faces)
-            for (int k = 0; k < 4; ++k)
-                for (int y = thin.y0[k]; y <= thin.y1[k]; ++y)
-                    for (int x = thin.x0[k]; x <= thin.x1[k]; ++x)
-                        canvas.paint(canvas.index(x, y), mesh.faceColours[thin.face]);
+    // Painted in that order by the same bands of rows, each on its own rows: a texel under two
+    // thin faces (over the separation budget) takes the later one's colour, as in one pass.
+    runBands(bands, workers, [&](size_t band) {
+        const int rowFrom = int(size_t(height) * band / bands);
+        const int rowTo = int(size_t(height) * (band + 1) / bands) - 1;
+        for (const std::vector<ThinFace> &faces : thinOf)
+            for (const ThinFace &thin : faces)
+                for (int k = 0; k < 4; ++k)
+                    for (int y = std::max<int>(thin.y0[k], rowFrom); y <= std::min<int>(thin.y1[k], rowTo); ++y)
+                        for (int x = thin.x0[k]; x <= thin.x1[k]; ++x)
+                            canvas.paint(canvas.index(x, y), mesh.faceColours[thin.face]);
+    });
     out.dilation = options.dilation < 0 ? layout.gutter / 2 : std::min(options.dilation, width);
     dilate(canvas, out.dilation, bands > 1 ? workers : 1);
     if (layout.block == 2 && out.dilation > 0)
