@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -152,20 +153,30 @@ double fillScale(const Packing &packing, int side, int height, double efficiency
     return lo;
 }
 
-bool densestFit(const AtlasCharts &charts, const PackOptions &o, int padding, int side, int height, double ceiling,
-                Packing &best, double &density, size_t &attempts, double known = 0, double knownFilled = 0,
-                double knownReached = 0, double start = 0) {
-    // Upper bound: the charts' projected area cannot exceed the texture, nor a chart its side.
+// The charts' projected area (AtlasCharts::projectedArea, summed in the same order) and longest
+// side, degenerate charts left out: measured once per packCharts.
+struct ChartExtent {
     double area = 0, longest = 0;
+};
+ChartExtent chartExtent(const AtlasCharts &charts) {
+    ChartExtent e;
     for (size_t c = 0; c < charts.chartCount(); ++c) {
         if (charts.isDegenerate(c))
             continue;
-        longest = std::max<double>({longest, charts.chartSize[c].x, charts.chartSize[c].y});
+        e.longest = std::max<double>({e.longest, charts.chartSize[c].x, charts.chartSize[c].y});
         for (uint32_t i = charts.chartFirstFace[c]; i < charts.chartFirstFace[c + 1]; ++i) {
             const glm::vec2 *uv = &charts.wedgeUv[3 * size_t(i)];
-            area += 0.5 * std::abs(doubleArea(uv[0], uv[1], uv[2]));
+            e.area += 0.5 * std::abs(doubleArea(uv[0], uv[1], uv[2]));
         }
     }
+    return e;
+}
+
+bool densestFit(const AtlasCharts &charts, const ChartExtent &extent, const PackOptions &o, int padding, int side,
+                int height, double ceiling, Packing &best, double &density, size_t &attempts, double known = 0,
+                double knownFilled = 0, double knownReached = 0, double start = 0) {
+    // Upper bound: the charts' projected area cannot exceed the texture, nor a chart its side.
+    const double area = extent.area, longest = extent.longest;
     double miss = area > 0 ? std::sqrt(double(side) * height / area) : 1.0;
     if (longest > 0)
         miss = std::min(miss, side / longest);
@@ -273,6 +284,12 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
     out.gutter = std::max(2, options.gutter + (options.gutter & 1));
     const int padding = out.gutter / 2;
 
+    std::optional<ChartExtent> measured;  // when first needed
+    auto extentOf = [&]() -> const ChartExtent & {
+        if (!measured)
+            measured = chartExtent(charts);
+        return *measured;
+    };
     Packing packing;
     packing.block = options.mipBlocks && options.mode == PackMode::Tight ? 2 : 1;
     out.block = packing.block;
@@ -282,7 +299,7 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
         height = options.textureHeight > 0 ? std::min(options.textureHeight, kMaxSide) : out.size;
         if (options.mode == PackMode::Paper)
             height = out.size;  // the paper's square
-        if (!densestFit(charts, options, padding, out.size, height, INFINITY, packing, out.texelsPerUnit,
+        if (!densestFit(charts, extentOf(), options, padding, out.size, height, INFINITY, packing, out.texelsPerUnit,
                         out.packAttempts, 0, 0, 0, options.startDensity))
             throw OptionError("the charts do not fit a " + std::to_string(out.size) + " x " + std::to_string(height) +
                               " texture at any density");
@@ -324,13 +341,13 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
         if (fits && options.fillTexture && options.mode == PackMode::Tight) {
             // The density is a minimum: raise it to fill the texture chosen.
             double density = out.texelsPerUnit;
-            if (densestFit(charts, options, padding, out.size, height, INFINITY, packing, density, out.packAttempts,
-                           out.texelsPerUnit, filled, reached))
+            if (densestFit(charts, extentOf(), options, padding, out.size, height, INFINITY, packing, density,
+                           out.packAttempts, out.texelsPerUnit, filled, reached))
                 out.texelsPerUnit = density;
             // Small textures whose charts' rims leave the charts too little of them: the larger
             // sizes up to smallTexels, each at the density that fills it, the best share kept
             // (a long chart can cap the density of one shape and not of the next).
-            const double area = charts.projectedArea();
+            const double area = extentOf().area;
             auto share = [&](double d, int w, int h) { return area * d * d / (double(w) * h); };
             double best = share(out.texelsPerUnit, out.size, height);
             for (int width = out.size, taller = height; best < options.leastChartShare;) {
@@ -340,7 +357,8 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
                 Packing larger;
                 larger.block = packing.block;
                 double denser = 0;
-                if (densestFit(charts, options, padding, width, taller, INFINITY, larger, denser, out.packAttempts) &&
+                if (densestFit(charts, extentOf(), options, padding, width, taller, INFINITY, larger, denser,
+                               out.packAttempts) &&
                     share(denser, width, taller) > best) {
                     best = share(denser, width, taller);
                     out.size = width, height = taller, out.texelsPerUnit = denser;
@@ -351,7 +369,7 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
         if (!fits) {
             out.size = height = maxSide;
             out.densityReduced = true;
-            if (!densestFit(charts, options, padding, out.size, height, options.texelsPerUnit, packing,
+            if (!densestFit(charts, extentOf(), options, padding, out.size, height, options.texelsPerUnit, packing,
                             out.texelsPerUnit, out.packAttempts, 0, 0, 0, options.startDensity))
                 throw OptionError("the charts do not fit a " + std::to_string(out.size) + " texture at any density");
             out.note = "texels per unit lowered from " + std::to_string(options.texelsPerUnit) + " to " +

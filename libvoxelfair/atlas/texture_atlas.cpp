@@ -38,11 +38,14 @@ TextureAtlas buildTextureAtlas(const AtlasMesh &mesh, const AtlasOptions &option
         // points apart by that factor: raise the density while the charts (twice their area for
         // gutters and packing) stay within the largest texture, then separate what is left.
         double density = pack.texelsPerUnit;
-        const double area = atlas.charts.projectedArea();
+        // The charts' area, measured when first needed: a separation over the budget leaves the
+        // charts as they were, so it is theirs before any separation.
+        double area = -1;
+        auto areaOf = [&] { return area >= 0 ? area : (area = atlas.charts.projectedArea()); };
         const double largest = double(std::clamp(pack.maxTextureSize, 1, 16384));
         separate(density, options.maxSeparatedShare);
         while (options.alwaysCrisp && atlas.crowded.overBudget() &&
-               2 * area * (2 * density * density) <= largest * largest) {
+               2 * areaOf() * (2 * density * density) <= largest * largest) {
             density *= std::sqrt(2.0);
             separate(density, options.maxSeparatedShare);
         }
