@@ -307,11 +307,38 @@ TightPacking packTight(const ChartMasks &masks, int side, int height, bool allow
     } fits[4];
     std::atomic<int64_t> bestKey{INT64_MAX};
     ColumnRuns columnRuns;  // the chart's bitmap's columns, found once for its odd turns
-    for (uint32_t c : order) {
+    auto needsColumns = [&](uint32_t c) { return allowTurns && bitmaps && bitmaps->has(c) && !boxed(c); };
+    // On more threads the columns of the next kColumnChunk charts in order that need them are
+    // found ahead, side by side (each reads its own bitmap): order[i]'s in ahead[aheadOf[i - aheadFrom]].
+    const int columnWorkers = bandThreads(threads, 2);
+    constexpr size_t kColumnChunk = 256;
+    std::vector<ColumnRuns> ahead(columnWorkers > 1 ? kColumnChunk : 0);
+    std::vector<uint32_t> aheadCharts;
+    std::vector<size_t> aheadOf;
+    size_t aheadFrom = 0, aheadEnd = 0;  // order[aheadFrom .. aheadEnd) are covered
+    for (size_t at = 0; at < charts; ++at) {
+        const uint32_t c = order[at];
         const bool box = boxed(c), small = area(c) < shapedArea;
         const uint8_t *bits = bitmaps && bitmaps->has(c) ? bitmaps->of(c) : nullptr;
         const ColumnRuns *columns = nullptr;
-        if (bits && !box && allowTurns) {
+        if (needsColumns(c) && columnWorkers > 1) {
+            if (at >= aheadEnd) {
+                aheadFrom = at;
+                aheadCharts.clear();
+                aheadOf.clear();
+                for (aheadEnd = at; aheadEnd < charts && aheadCharts.size() < kColumnChunk; ++aheadEnd) {
+                    const bool need = needsColumns(order[aheadEnd]);
+                    aheadOf.push_back(need ? aheadCharts.size() : SIZE_MAX);
+                    if (need)
+                        aheadCharts.push_back(order[aheadEnd]);
+                }
+                runBands(aheadCharts.size(), columnWorkers, [&](size_t k) {
+                    const uint32_t d = aheadCharts[k];
+                    findColumnRuns(bitmaps->of(d), masks.charts[d].width, masks.charts[d].height, ahead[k]);
+                });
+            }
+            columns = &ahead[aheadOf[at - aheadFrom]];
+        } else if (needsColumns(c)) {
             findColumnRuns(bits, masks.charts[c].width, masks.charts[c].height, columnRuns);
             columns = &columnRuns;
         }
