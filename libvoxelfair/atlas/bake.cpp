@@ -362,6 +362,7 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
     struct ThinFace {
         uint32_t face;
         uint16_t x0[4], x1[4], y0[4], y1[4];  // per interior point
+        uint16_t bottom, top;                 // the least y0, the greatest y1
     };
     std::vector<std::vector<ThinFace>> thinOf(bands);
     std::vector<std::vector<uint32_t>> reachedOf(bands);
@@ -382,13 +383,15 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
             if (crisp && f >= noteFrom && f < noteTo) {
                 const double inradius = faceInteriorPoints(q, points);
                 if (inradius > 0 && inradius < std::sqrt(2.0) + 2 * kUvRounding) {
-                    ThinFace thin{uint32_t(f), {}, {}, {}, {}};
+                    ThinFace thin{uint32_t(f), {}, {}, {}, {}, uint16_t(height - 1), 0};
                     for (int k = 0; k < 4; ++k) {
                         const glm::dvec2 &p = points[k];
                         thin.x0[k] = uint16_t(clampToInt(p.x - kUvRounding, 0, width - 1));
                         thin.x1[k] = uint16_t(clampToInt(p.x + kUvRounding, 0, width - 1));
                         thin.y0[k] = uint16_t(clampToInt(p.y - kUvRounding, 0, height - 1));
                         thin.y1[k] = uint16_t(clampToInt(p.y + kUvRounding, 0, height - 1));
+                        thin.bottom = std::min(thin.bottom, thin.y0[k]);
+                        thin.top = std::max(thin.top, thin.y1[k]);
                     }
                     thinOf[band].push_back(thin);
                 }
@@ -425,7 +428,7 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
         const int rowTo = int(size_t(height) * (band + 1) / bands) - 1;
         for (const std::vector<ThinFace> &faces : thinOf)
             for (const ThinFace &thin : faces)
-                for (int k = 0; k < 4; ++k)
+                for (int k = 0; k < 4 && thin.top >= rowFrom && thin.bottom <= rowTo; ++k)
                     for (int y = std::max<int>(thin.y0[k], rowFrom); y <= std::min<int>(thin.y1[k], rowTo); ++y)
                         for (int x = thin.x0[k]; x <= thin.x1[k]; ++x)
                             canvas.paint(canvas.index(x, y), mesh.faceColours[thin.face]);
