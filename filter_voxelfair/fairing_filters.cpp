@@ -17,6 +17,7 @@
 #include <glm/common.hpp>
 
 #include <algorithm>
+#include <future>
 
 using namespace voxelfair;
 
@@ -156,25 +157,39 @@ bool FilterVoxelfairPlugin::applyAttributeSmoothing(MeshModel &m, const RichPara
 
     std::vector<glm::vec3> polygonNormals(polygons);
     std::vector<glm::vec3> vertexNormals(arrays.positions.size());
-    computePolygonNormals(mesh, polygonNormals.data());
     VertexNormalOptions normalOptions;
     if (!parameters.getBool("distinctNormals"))
-        normalOptions.sameDirection = 2.0f;                     // never merge: plain mean
-    const CsrAdjacency polygonsOf = buildVertexPolygons(mesh);  // for the normals and the colours
-    computeVertexNormals(mesh, polygonsOf, polygonNormals.data(), vertexNormals.data(), normalOptions);
-
+        normalOptions.sameDirection = 2.0f;  // never merge: plain mean
+    // The polygons' normals on a second thread beside the vertex-polygon adjacency and the vertex
+    // colours (each writes its own arrays; the library chain's order, testkit smoothAttributes);
+    // get() rethrows a MeshError of the polygons.
+    std::future<void> normalsDone =
+        std::async(std::launch::async, [&] { computePolygonNormals(mesh, polygonNormals.data()); });
     // Face colours: the polygon's first triangle's colour; without face colours, the vertex colours
     // already there (or a flat grey) are kept and said so.
     const bool hasFaceColours = m.hasDataMask(MeshModel::MM_FACECOLOR);
-    if (hasFaceColours) {
-        std::vector<glm::vec4> polygonColours(polygons);
-        for (size_t p = 0; p < polygons; ++p) {
-            const vcg::Color4b &c = m.cm.face[arrays.polygonFace[p]].C();
-            polygonColours[p] = glm::vec4(c[0], c[1], c[2], c[3]);
+    CsrAdjacency polygonsOf;  // for the normals and the colours
+    std::vector<glm::vec4> vertexColours;
+    try {
+        polygonsOf = buildVertexPolygons(mesh);
+        if (hasFaceColours) {
+            std::vector<glm::vec4> polygonColours(polygons);
+            for (size_t p = 0; p < polygons; ++p) {
+                const vcg::Color4b &c = m.cm.face[arrays.polygonFace[p]].C();
+                polygonColours[p] = glm::vec4(c[0], c[1], c[2], c[3]);
+            }
+            vertexColours.resize(arrays.positions.size());
+            PolygonMesh coloured = mesh;
+            coloured.polygonColours = polygonColours.data();
+            computeVertexColours(coloured, polygonsOf, vertexColours.data());
         }
-        std::vector<glm::vec4> vertexColours(arrays.positions.size());
-        mesh.polygonColours = polygonColours.data();
-        computeVertexColours(mesh, polygonsOf, vertexColours.data());
+    } catch (...) {
+        normalsDone.wait();  // the thread reads `mesh`: done before this frame goes
+        throw;
+    }
+    normalsDone.get();
+    computeVertexNormals(mesh, polygonsOf, polygonNormals.data(), vertexNormals.data(), normalOptions);
+    if (hasFaceColours) {
         m.updateDataMask(MeshModel::MM_VERTCOLOR);
         for (size_t i = 0; i < arrays.vertexOf.size(); ++i) {
             const glm::vec4 c = glm::clamp(glm::round(vertexColours[i]), 0.0f, 255.0f);
