@@ -1,5 +1,6 @@
 #include "atlas/bake.h"
 
+#include "atlas/chart_runs.h"
 #include "atlas/texel_raster.h"
 #include "base/byte_words.h"
 #include "base/parallel_bands.h"
@@ -30,9 +31,6 @@ namespace {
 // Slightly strict coverage (see kMaskMargin in chart_masks.cpp): the bake never paints outside
 // the packed masks.
 constexpr double kBakeMargin = -1.0 / 256;
-
-// Meshes with fewer faces are painted on one thread: starting threads would cost more.
-constexpr size_t kLeastParallelFaces = 4096;
 
 // The image being baked: RGBA rows from the top, as AtlasTexture::rgba, and per texel whether
 // it is painted (a face's texel or a dilation ring's).

@@ -1,5 +1,6 @@
 #include "atlas/chart_masks.h"
 
+#include "atlas/chart_runs.h"
 #include "atlas/texel_raster.h"
 #include "base/byte_words.h"
 #include "base/parallel_bands.h"
@@ -42,9 +43,6 @@ struct MaskPart {
     size_t totalRowTexels = 0;
     std::vector<uint64_t> seen;  // scratch: the columns seen so far in a pass over a bitmap's rows
 };
-
-// Fewer faces than this are rasterised on one thread: starting threads would cost more.
-constexpr size_t kLeastParallelFaces = 4096;
 
 // Folds a chart's conservative span (y, xl..xr) into the mask's row and column extents.
 struct SpanRecorder {
@@ -292,19 +290,11 @@ bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int pa
     masks.texelsPerUnit = texelsPerUnit;
     masks.padding = padding;
     masks.totalRowTexels = 0;
-    // Runs of charts of about equal faces, a few per thread, rasterised apart and joined in
-    // order: the masks are the same for any thread count.
-    const size_t chartCount = charts.chartCount(), faces = charts.faceCount();
-    const int workers = bandThreads(threads, chartCount);
-    const size_t bands =
-        workers > 1 && faces >= kLeastParallelFaces ? std::min<size_t>(4 * size_t(workers), chartCount) : 1;
-    std::vector<size_t> from(bands + 1, chartCount);
-    from[0] = 0;
-    for (size_t b = 1, c = 0; b < bands; ++b) {
-        while (c < chartCount && charts.chartFirstFace[c] < faces * b / bands)
-            ++c;
-        from[b] = c;
-    }
+    // Runs of charts (atlas/chart_runs.h) rasterised apart and joined in order.
+    const ChartRuns runs = chartRuns(charts, threads);
+    const int workers = runs.workers;
+    const size_t bands = runs.count();
+    const std::vector<size_t> &from = runs.from;
     std::vector<MaskPart> parts(bands);
     std::vector<uint8_t> fits(bands, 0);
     runBands(bands, workers, [&](size_t b) {

@@ -1,5 +1,6 @@
 #include "atlas/chart_merge.h"
 
+#include "atlas/chart_runs.h"
 #include "atlas/chart_overlap.h"
 #include "atlas/edge_adjacency.h"
 #include "atlas/seed_plane.h"
@@ -18,9 +19,6 @@ namespace voxelfair {
 namespace {
 
 constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
-
-// Fewer faces than this are merged on one thread: starting threads would cost more.
-constexpr size_t kLeastParallelFaces = 4096;
 
 // Whether an edge line of counter-clockwise triangle `t` has all of `u` on its closed outer side.
 bool separates(const glm::vec2 *t, const glm::vec2 *u) {
@@ -101,15 +99,10 @@ size_t mergeSmallCharts(const AtlasMesh &mesh, const uint32_t *opposite, const C
 
     // Runs of charts of about equal faces, a few per thread, for the steps that take each chart
     // (or face) alone: the set-up and the rebuilt charts, the same for any thread count.
-    const int workers = faceCount >= kLeastParallelFaces ? bandThreads(options.threads, chartCount) : 1;
-    const size_t bands = workers > 1 ? std::min<size_t>(4 * size_t(workers), chartCount) : 1;
-    std::vector<size_t> from(bands + 1, chartCount);
-    from[0] = 0;
-    for (size_t band = 1, c = 0; band < bands; ++band) {
-        while (c < chartCount && charts.chartFirstFace[c] < faceCount * band / bands)
-            ++c;
-        from[band] = c;
-    }
+    const ChartRuns runs = chartRuns(charts, options.threads);
+    const int workers = runs.workers;
+    const size_t bands = runs.count();
+    const std::vector<size_t> &from = runs.from;
 
     // Each chart's faces as a list (head, tail, next), UVs per face (3f + k) in its chart's frame:
     // the chart's seed plane and origin, minus the shift `lo` that put its box at the origin.

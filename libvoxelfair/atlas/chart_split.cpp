@@ -1,6 +1,7 @@
 // Sparse charts cut by recursive bisection; the contract is in chart_split.h.
 #include "atlas/chart_split.h"
 
+#include "atlas/chart_runs.h"
 #include "atlas/edge_adjacency.h"
 #include "atlas/texel_raster.h"
 #include "base/parallel_bands.h"
@@ -15,9 +16,6 @@
 
 namespace voxelfair {
 namespace {
-
-// Fewer faces than this are measured on one thread: starting threads would cost more.
-constexpr size_t kLeastParallelFaces = 4096;
 
 struct Box {
     glm::vec2 lo{std::numeric_limits<float>::max()}, hi{-std::numeric_limits<float>::max()};
@@ -48,16 +46,10 @@ size_t splitSparseCharts(const uint32_t *opposite, const ChartSplitOptions &opti
     // Charts to cut, found first: most models have none, and then nothing is rebuilt. Each chart
     // is measured alone: runs of charts of about equal faces on up to options.threads threads.
     std::vector<char> sparse(chartCount, 0);
-    const size_t faceCount = charts.chartFaces.size();
-    const int workers = faceCount >= kLeastParallelFaces ? bandThreads(options.threads, chartCount) : 1;
-    const size_t bands = workers > 1 ? std::min<size_t>(4 * size_t(workers), chartCount) : 1;
-    std::vector<size_t> from(bands + 1, chartCount);
-    from[0] = 0;
-    for (size_t band = 1, c = 0; band < bands; ++band) {
-        while (c < chartCount && charts.chartFirstFace[c] < faceCount * band / bands)
-            ++c;
-        from[band] = c;
-    }
+    const ChartRuns runs = chartRuns(charts, options.threads);
+    const int workers = runs.workers;
+    const size_t bands = runs.count();
+    const std::vector<size_t> &from = runs.from;
     runBands(bands, workers, [&](size_t band) {
         std::vector<uint32_t> entries;
         for (size_t c = from[band]; c < from[band + 1]; ++c) {

@@ -1,5 +1,6 @@
 #include "atlas/charts.h"
 
+#include "atlas/chart_runs.h"
 #include "atlas/chart_merge.h"
 #include "atlas/chart_split.h"
 #include "atlas/chart_overlap.h"
@@ -51,9 +52,6 @@ void radixSortByKey(std::vector<uint32_t> &items, std::vector<uint32_t> &keys) {
         keys.swap(keys2);
     }
 }
-
-// Meshes with fewer faces are charted on one thread: starting a second would cost more.
-constexpr size_t kLeastParallelFaces = 4096;
 
 }  // namespace
 

@@ -1,5 +1,6 @@
 #include "atlas/crowded_faces.h"
 
+#include "atlas/chart_runs.h"
 #include "atlas/seed_plane.h"
 #include "atlas/texel_raster.h"
 #include "base/parallel_bands.h"
@@ -29,9 +30,6 @@ constexpr double kReach = 1.41421356237309505 + 0.01;
 // points move there, out of this search's sight. In a chart with other colours they are
 // separated whatever their neighbours.
 constexpr double kFloatThin = 0.01;
-
-// Fewer faces than this are searched on one thread: starting threads would cost more.
-constexpr size_t kLeastParallelFaces = 4096;
 
 // One chart's interior points in a uniform grid of cells at least 2 * kReach texels wide, so
 // the points within kReach of a query point lie in at most 4 cells. Cells grow with the chart's

@@ -1,5 +1,6 @@
 #include "atlas/packing.h"
 
+#include "atlas/chart_runs.h"
 #include "atlas/pack_paper.h"
 #include "atlas/pack_tight.h"
 #include "atlas/texel_raster.h"
@@ -19,9 +20,6 @@ const char *toString(PackMode mode) { return mode == PackMode::Paper ? "paper" :
 namespace {
 
 constexpr int kMaxSide = 16384;  // the packers keep texel rows and columns in int16
-
-// Fewer faces than this get their final UVs on one thread: starting threads would cost more.
-constexpr size_t kLeastParallelFaces = 4096;
 
 // Charts of at least this many blocks (4 x 4) get a bitmap (chart_bitmaps.h) and are packed by
 // their shape, not their box: on legs 64 -> 16 halves the texture (2048^2 -> 2048 x 1024).
@@ -383,20 +381,15 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
     // Final UVs: chart texels -> turned mask -> texture, over the side. A sliver thinner than
     // float precision can come out flat or flipped; it gets a tiny right triangle (1/64 texel) at
     // its first corner so every face keeps a positive UV area. Each face's UVs depend on its
-    // chart alone: runs of charts of about equal faces on up to `threads` threads.
+    // chart alone: runs of charts (atlas/chart_runs.h) on up to `threads` threads.
     out.placements = packing.placements;
     out.wedgeUv.resize(charts.wedgeUv.size());
     const glm::dvec2 extent(out.width, out.height);
-    const size_t chartCount = charts.chartCount(), faceCount = charts.faceCount();
-    const int workers = faceCount >= kLeastParallelFaces ? bandThreads(options.threads, chartCount) : 1;
-    const size_t bands = workers > 1 ? std::min<size_t>(4 * size_t(workers), chartCount) : 1;
-    std::vector<size_t> from(bands + 1, chartCount), nudged(bands, 0);
-    from[0] = 0;
-    for (size_t band = 1, c = 0; band < bands; ++band) {
-        while (c < chartCount && charts.chartFirstFace[c] < faceCount * band / bands)
-            ++c;
-        from[band] = c;
-    }
+    const ChartRuns runs = chartRuns(charts, options.threads);
+    const int workers = runs.workers;
+    const size_t bands = runs.count();
+    const std::vector<size_t> &from = runs.from;
+    std::vector<size_t> nudged(bands, 0);
     runBands(bands, workers, [&](size_t band) {
         for (size_t c = from[band]; c < from[band + 1]; ++c) {
             const ChartMask &m = packing.packed().charts[c];
