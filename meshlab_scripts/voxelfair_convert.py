@@ -509,6 +509,9 @@ def main():
             model = jobs[job]
             try:
                 outputs, seconds, details = job.result()
+                if args.max_texture_size < 16384 and any("reduced to fit the maximum size" in d for d in details):
+                    details.append(f"the texture is capped at {args.max_texture_size} x {args.max_texture_size}: "
+                                   f"--max-texture-size {2 * args.max_texture_size} keeps more texels per voxel")
                 extra = f" [{'; '.join(details)}]" if details else ""
                 print(f"[{done}/{len(models)}] {model.name} -> {', '.join(o.name for o in outputs)} "
                       f"({seconds:.2f} s){extra}", flush=True)

@@ -236,6 +236,7 @@ class ConvertWrapper(unittest.TestCase):
             return struct.unpack(">II", png.read_bytes()[16:24])
         code, output = wrapper(self.work, "models/tank.vxl", "-o", "free", "--formats", "glb")
         self.assertEqual(code, 0, output)
+        free_output = output
         free = size(self.work / "free" / "tank_texture.png")
         self.assertGreater(max(free), 128, output)  # the example needs more than 128 at 8 texels per voxel
         code, output = wrapper(self.work, "models/tank.vxl", "-o", "capped", "--formats", "glb",
@@ -243,6 +244,8 @@ class ConvertWrapper(unittest.TestCase):
         self.assertEqual(code, 0, output)
         self.assertEqual(size(self.work / "capped" / "tank_texture.png"), (128, 128))
         self.assertIn("reduced to fit the maximum size", output)
+        self.assertIn("--max-texture-size 256 keeps more texels per voxel", output)  # the way out, named
+        self.assertNotIn("keeps more texels per voxel", free_output)  # not where nothing was reduced
         validator = subprocess.run(["node", str(HERE.parent.parent / "tools" / "gltf_validate.js"),
                                     str(self.work / "capped" / "tank.glb")], capture_output=True, text=True)
         self.assertIn("0 errors, 0 warnings", validator.stdout)
