@@ -425,11 +425,14 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
         const int rowFrom = int(size_t(height) * band / bands);
         const int rowTo = int(size_t(height) * (band + 1) / bands) - 1;
         for (const std::vector<ThinFace> &faces : thinOf)
-            for (const ThinFace &thin : faces)
-                for (int k = 0; k < 4 && thin.top >= rowFrom && thin.bottom <= rowTo; ++k)
+            for (const ThinFace &thin : faces) {
+                if (thin.top < rowFrom || thin.bottom > rowTo)
+                    continue;  // none of its rows in this band
+                for (int k = 0; k < 4; ++k)
                     for (int y = std::max<int>(thin.y0[k], rowFrom); y <= std::min<int>(thin.y1[k], rowTo); ++y)
                         for (int x = thin.x0[k]; x <= thin.x1[k]; ++x)
                             canvas.paint(canvas.index(x, y), mesh.faceColours[thin.face]);
+            }
     });
     out.dilation = options.dilation < 0 ? layout.gutter / 2 : std::min(options.dilation, width);
     dilate(canvas, out.dilation, bands > 1 ? workers : 1);

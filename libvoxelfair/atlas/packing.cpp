@@ -151,22 +151,17 @@ double fillScale(const Packing &packing, int side, int height, double efficiency
     return lo;
 }
 
-// The charts' projected area (AtlasCharts::projectedArea, summed in the same order) and longest
-// side, degenerate charts left out: measured once per packCharts.
+// The charts' projected area (AtlasCharts::projectedArea) and longest side, degenerate charts
+// left out: measured once per packCharts.
 struct ChartExtent {
     double area = 0, longest = 0;
 };
 ChartExtent chartExtent(const AtlasCharts &charts) {
     ChartExtent e;
-    for (size_t c = 0; c < charts.chartCount(); ++c) {
-        if (charts.isDegenerate(c))
-            continue;
-        e.longest = std::max<double>({e.longest, charts.chartSize[c].x, charts.chartSize[c].y});
-        for (uint32_t i = charts.chartFirstFace[c]; i < charts.chartFirstFace[c + 1]; ++i) {
-            const glm::vec2 *uv = &charts.wedgeUv[3 * size_t(i)];
-            e.area += 0.5 * std::abs(doubleArea(uv[0], uv[1], uv[2]));
-        }
-    }
+    e.area = charts.projectedArea();
+    for (size_t c = 0; c < charts.chartCount(); ++c)
+        if (!charts.isDegenerate(c))
+            e.longest = std::max<double>({e.longest, charts.chartSize[c].x, charts.chartSize[c].y});
     return e;
 }
 
