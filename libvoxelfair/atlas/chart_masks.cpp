@@ -1,5 +1,6 @@
 #include "atlas/chart_masks.h"
 
+#include "atlas/chart_outline.h"
 #include "atlas/chart_runs.h"
 #include "atlas/texel_raster.h"
 #include "base/byte_words.h"
@@ -22,6 +23,9 @@ constexpr double kMaskMargin = 1.0 / 256;
 
 constexpr int kNone = std::numeric_limits<int>::max();
 
+// Charts of fewer triangles are rasterised whole: their outline would cost about as much.
+constexpr size_t kLeastOutlinedFaces = 16;
+
 // out[k] = the least of v[from + k - r .. from + k + r] (indices outside v left out), kNone
 // when all are kNone, for k in [0, count).
 void windowMin(const std::vector<int> &v, int from, int count, int r, int *out) {
@@ -42,6 +46,7 @@ struct MaskPart {
     std::vector<size_t> bitsFirst, setBlocks;
     size_t totalRowTexels = 0;
     std::vector<uint64_t> seen;  // scratch: the columns seen so far in a pass over a bitmap's rows
+    ChartOutline outline;        // scratch: the chart's outline
 };
 
 // Folds a chart's conservative span (y, xl..xr) into the mask's row and column extents.
@@ -72,8 +77,8 @@ struct SpanRecorder {
 // the box whose blocks are all set already would add nothing, so only the rows from the first
 // to the last row with an unset block are rasterised (the same spans there: rowFrom, rowTo),
 // none when every row is set. The extents are then read off the bitmap.
-bool rasterizeBlocks(const AtlasCharts &charts, size_t c, double origin, int w, int h, int padding, int maxSide,
-                     ChartMask &m, MaskPart &part) {
+bool rasterizeBlocks(const AtlasCharts &charts, const uint8_t *shared, size_t c, double origin, int w, int h,
+                     int padding, int maxSide, ChartMask &m, MaskPart &part) {
     double lx = INFINITY, hx = -INFINITY, ly = INFINITY, hy = -INFINITY;
     for (size_t i = charts.chartFirstFace[c]; i < charts.chartFirstFace[c + 1]; ++i) {
         const glm::vec2 *uv = &charts.wedgeUv[3 * i];
@@ -104,8 +109,16 @@ bool rasterizeBlocks(const AtlasCharts &charts, size_t c, double origin, int w, 
     part.bits.resize(first + size_t(width) * size_t(height), 0);
     uint8_t *bits = part.bits.data() + first;
     const double margin = (padding + kMaskMargin) / 2;
-    bool any = false;
-    for (size_t i = charts.chartFirstFace[c]; i < charts.chartFirstFace[c + 1]; ++i) {
+    // A chart of more than a few triangles: the blocks whose centre lies inside it filled from its
+    // outline, then only its rim triangles rasterised (chart_outline.h).
+    const size_t faceFirst = charts.chartFirstFace[c], faces = charts.chartFirstFace[c + 1] - faceFirst;
+    ChartOutline &outline = part.outline;
+    const bool outlined = shared != nullptr && faces >= kLeastOutlinedFaces &&
+                          chartOutline(charts, c, shared, m.scale, m.offset, height, outline);
+    bool any = outlined && fillInsideOutline(outline, width, height, bits);
+    for (size_t i = faceFirst; i < faceFirst + faces; ++i) {
+        if (outlined && !outline.rim[i - faceFirst])
+            continue;
         const glm::vec2 *uv = &charts.wedgeUv[3 * i];
         const glm::dvec2 a = (glm::dvec2(uv[0]) * m.scale + m.offset) * 0.5,
                          b = (glm::dvec2(uv[1]) * m.scale + m.offset) * 0.5,
@@ -195,8 +208,8 @@ bool rasterizeBlocks(const AtlasCharts &charts, size_t c, double origin, int w, 
 
 // Charts [first, end) into `part` (profiles and bitmaps counted from its own start) and
 // masks[first, end): false as soon as one is too large.
-bool rasterizeRange(const AtlasCharts &charts, size_t first, size_t end, double texelsPerUnit, int padding, int maxSide,
-                    bool onBlocks, ChartMask *masks, MaskPart &part) {
+bool rasterizeRange(const AtlasCharts &charts, const uint8_t *shared, size_t first, size_t end, double texelsPerUnit,
+                    int padding, int maxSide, bool onBlocks, ChartMask *masks, MaskPart &part) {
     // The footprint's extent per row (leftmost, rightmost column) and per column (lowest,
     // highest row) in the chart's canvas; kNone where nothing is set. Only these extents reach
     // the packers, so the footprint itself is never stored: the square dilation by `padding`
@@ -215,7 +228,7 @@ bool rasterizeRange(const AtlasCharts &charts, size_t first, size_t end, double 
             return false;
         const int w = int(std::ceil(size.x)) + 2 * border + 1, h = int(std::ceil(size.y)) + 2 * border + 1;
         if (onBlocks) {
-            if (!rasterizeBlocks(charts, c, origin, w, h, padding, maxSide, m, part))
+            if (!rasterizeBlocks(charts, shared, c, origin, w, h, padding, maxSide, m, part))
                 return false;
             continue;
         }
@@ -281,7 +294,7 @@ bool rasterizeRange(const AtlasCharts &charts, size_t first, size_t end, double 
 }  // namespace
 
 bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int padding, int maxSide, ChartMasks &masks,
-                         int threads, bool onBlocks) {
+                         int threads, bool onBlocks, const std::vector<uint8_t> *sharedEdges) {
     masks.bits.clear();
     masks.bitsFirst.clear();
     masks.setBlocks.clear();
@@ -296,9 +309,11 @@ bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int pa
     const size_t bands = runs.count();
     const std::vector<size_t> &from = runs.from;
     std::vector<MaskPart> parts(bands);
+    const uint8_t *shared =
+        onBlocks && sharedEdges != nullptr && sharedEdges->size() == charts.faceCount() ? sharedEdges->data() : nullptr;
     std::vector<uint8_t> fits(bands, 0);
     runBands(bands, workers, [&](size_t b) {
-        fits[b] = rasterizeRange(charts, from[b], from[b + 1], texelsPerUnit, padding, maxSide, onBlocks,
+        fits[b] = rasterizeRange(charts, shared, from[b], from[b + 1], texelsPerUnit, padding, maxSide, onBlocks,
                                  masks.charts.data(), parts[b]);
     });
     for (size_t b = 0; b < bands; ++b) {

@@ -352,6 +352,7 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
     split.minFill = options.minChartFill;
     split.threads = options.threads;
     splitSparseCharts(adjacency.opposite.data(), split, out);
+    out.faceOpposite = std::move(adjacency.opposite);
     return out;
 }
 

@@ -79,6 +79,11 @@ struct AtlasCharts {
     // wedgeUv[3 * i + k] is corner k of face chartFaces[i]. Stored in chart order so the later
     // stages read each chart contiguously.
     std::vector<glm::vec2> wedgeUv;
+    // The mesh's edge adjacency (edge_adjacency.h): for half-edge 3f + k (corner k to corner
+    // k + 1 of face f), the other face's half-edge on that edge, or kNoOpposite. The packer
+    // fills each chart's inside from its outline (chart_outline.h); empty, it rasterises every
+    // triangle instead.
+    std::vector<uint32_t> faceOpposite;
 
     size_t degenerateFaces = 0;     // faces given their own tiny chart (includes nonFiniteFaces)
     size_t nonFiniteFaces = 0;      // faces with a vertex that is not finite

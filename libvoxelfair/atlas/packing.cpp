@@ -1,5 +1,6 @@
 #include "atlas/packing.h"
 
+#include "atlas/chart_outline.h"
 #include "atlas/chart_runs.h"
 #include "atlas/pack_paper.h"
 #include "atlas/pack_tight.h"
@@ -29,6 +30,8 @@ constexpr int64_t kLeastBitmapBlocks = 16;
 // in texels either way.
 struct Packing {
     int block = 1;
+    // With blocks: the charts' shared edges (chart_outline.h), measured once per packCharts.
+    const std::vector<uint8_t> *sharedEdges = nullptr;
     ChartMasks masks, blocks;
     ChartBitmaps bitmaps;  // of the larger charts, with blocks
     std::vector<ChartPlacement> placements;
@@ -38,7 +41,7 @@ struct Packing {
 bool rasterize(const AtlasCharts &charts, double density, int padding, int maxSide, int threads, Packing &out) {
     if (out.block == 1)
         return rasterizeChartMasks(charts, density, padding, maxSide, out.masks, threads);
-    if (!rasterizeChartMasks(charts, density, padding, maxSide, out.blocks, threads, true))
+    if (!rasterizeChartMasks(charts, density, padding, maxSide, out.blocks, threads, true, out.sharedEdges))
         return false;
     takeChartBitmaps(charts, out.blocks, kLeastBitmapBlocks, out.bitmaps);
     return true;
@@ -194,6 +197,7 @@ bool densestFit(const AtlasCharts &charts, const ChartExtent &extent, const Pack
     }
     Packing trial;
     trial.block = best.block;
+    trial.sharedEdges = best.sharedEdges;
     // Small models pack in a few milliseconds: their fill tries more and goes on after a fit.
     const bool cheap = known > 0 && charts.faceCount() <= size_t(std::max(0, o.cheapFillFaces));
     // A larger model's fill stops at its first fit: where the aim is within kCloseFillAims of the
@@ -286,6 +290,11 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
     Packing packing;
     packing.block = options.mipBlocks && options.mode == PackMode::Tight ? 2 : 1;
     out.block = packing.block;
+    std::vector<uint8_t> sharedEdges;  // the same for every density tried
+    if (packing.block > 1) {
+        sharedEdges = chartSharedEdges(charts, options.threads);
+        packing.sharedEdges = &sharedEdges;
+    }
     int height = 0;
     if (options.textureSize > 0) {
         out.size = std::min(options.textureSize, kMaxSide);
@@ -349,6 +358,7 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
                     break;
                 Packing larger;
                 larger.block = packing.block;
+                larger.sharedEdges = packing.sharedEdges;
                 double denser = 0;
                 if (densestFit(charts, extentOf(), options, padding, width, taller, INFINITY, larger, denser,
                                out.packAttempts) &&
