@@ -39,7 +39,8 @@ void addUncovered(int x, int y, const VoxelRun *a, const VoxelRun *aEnd, const V
 
 }  // namespace
 
-void collectBoundaryFaces(const VoxelVolume &solid, std::vector<BoundaryFace> &faces, std::vector<Voxel> &voxels) {
+void collectBoundaryFaces(const VoxelVolume &solid, int y0, int y1, std::vector<BoundaryFace> &faces,
+                          std::vector<Voxel> &voxels) {
     FaceSink sink{faces, voxels, solid};
     struct Side {
         int dx, dy;
@@ -47,7 +48,7 @@ void collectBoundaryFaces(const VoxelVolume &solid, std::vector<BoundaryFace> &f
     };
     constexpr Side kSides[4] = {{-1, 0, 0}, {1, 0, 1}, {0, -1, 2}, {0, 1, 3}};
     const VoxelRun *runs = solid.runs.data();
-    for (int y = 0; y < solid.sizeY; ++y) {
+    for (int y = y0; y < y1; ++y) {
         for (int x = 0; x < solid.sizeX; ++x) {
             const size_t c = solid.columnIndex(x, y);
             const VoxelRun *first = runs + solid.columnFirstRun[c], *last = runs + solid.columnFirstRun[c + 1];

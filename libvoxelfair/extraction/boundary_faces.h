@@ -14,7 +14,9 @@ struct BoundaryFace {
     uint8_t direction;  // outward: 2 * axis + 1 towards +axis, 2 * axis towards -axis
 };
 
-// Appends every boundary face of `solid` and the payload of its voxel, column by column.
-void collectBoundaryFaces(const VoxelVolume &solid, std::vector<BoundaryFace> &faces, std::vector<Voxel> &voxels);
+// Appends every boundary face of `solid` in rows y0 <= y < y1 and the payload of its voxel,
+// column by column (y-major).
+void collectBoundaryFaces(const VoxelVolume &solid, int y0, int y1, std::vector<BoundaryFace> &faces,
+                          std::vector<Voxel> &voxels);
 
 }  // namespace voxelfair

@@ -1,5 +1,6 @@
 #include "extraction/boundary_surface.h"
 
+#include "base/parallel_bands.h"
 #include "extraction/boundary_faces.h"
 #include "extraction/cavity_fill.h"
 #include "extraction/lattice_point_map.h"
@@ -7,6 +8,8 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
+#include <memory>
 
 namespace voxelfair {
 namespace {
@@ -65,22 +68,42 @@ constexpr std::array<std::array<CornerStep, 4>, 6> buildCornerSteps() {
 
 constexpr std::array<std::array<CornerStep, 4>, 6> kCornerSteps = buildCornerSteps();
 
-// Gives each (lattice point, sheet) one vertex, made the first time a quad reaches the point.
+// Gives each (lattice point, sheet) one vertex, made the first time a quad reaches the point,
+// numbered in that order from 0. Points made on the lattice plane y = sharedY are listed, in
+// order (a slab's points that the slab before it may have made too).
 class SheetVertices {
 public:
-    SheetVertices(const VoxelVolume &solid, size_t quads, BoundarySurface &surface)
-        : solid_(solid), surface_(surface), points_(quads + quads / 4 + 8) {
-        surface_.positions.reserve(quads + quads / 4 + 8);  // V = F + 2 - 2g, plus split copies
+    SheetVertices(const VoxelVolume &solid, size_t quads, int sharedY)
+        : solid_(solid), points_(quads + quads / 4 + 8), sharedY_(sharedY) {
+        positions.reserve(quads + quads / 4 + 8);  // V = F + 2 - 2g, plus split copies
     }
 
     uint32_t vertex(int x, int y, int z, int slot) {
         auto [point, inserted] = points_.insert(LatticePointMap::key(x, y, z));
         if (inserted)
             makeVertices(*point, x, y, z);
-        const LatticeVertexConfig &config = kLatticeVertexConfigs[point->config];
-        const LatticeVertexSheets &sheets = point->joined ? config.joined : config.separate;
-        return point->firstVertex + sheets.sheetOfSlot[slot];
+        return point->firstVertex + sheetsOf(*point).sheetOfSlot[slot];
     }
+
+    const LatticePointMap &points() const { return points_; }
+
+    static const LatticeVertexSheets &sheetsOf(const LatticePointMap::Entry &point) {
+        const LatticeVertexConfig &config = kLatticeVertexConfigs[point.config];
+        return point.joined ? config.joined : config.separate;
+    }
+
+    // What one point adds to the stats (its split copies and edges, its joined tunnel).
+    static void count(const LatticePointMap::Entry &point, BoundarySurfaceStats &stats) {
+        const LatticeVertexConfig &config = kLatticeVertexConfigs[point.config];
+        if (point.joined && (config.pinchedHalfEdge & 1))
+            ++stats.pinchedEdgesJoined;
+        stats.nonManifoldVerticesSplit += sheetsOf(point).sheetCount - 1u;
+        stats.nonManifoldEdgesSplit += config.fourQuadEdgesForward;
+    }
+
+    std::vector<glm::vec3> positions;
+    BoundarySurfaceStats stats;
+    std::vector<uint64_t> sharedPoints;
 
 private:
     void makeVertices(LatticePointMap::Entry &point, int x, int y, int z) {
@@ -93,36 +116,113 @@ private:
             int q[3] = {x, y, z};
             q[h / 2] += (h & 1) ? 1 : -1;
             point.joined = kLatticeVertexConfigs[latticeConfig(solid_, q[0], q[1], q[2])].pinchedHalfEdge == (h ^ 1);
-            if (point.joined && (h & 1))
-                ++surface_.stats.pinchedEdgesJoined;
         }
-        const LatticeVertexSheets &sheets = point.joined ? config.joined : config.separate;
-        point.firstVertex = uint32_t(surface_.positions.size());
-        for (int i = 0; i < sheets.sheetCount; ++i)
-            surface_.positions.emplace_back(x, y, z);
-        surface_.stats.nonManifoldVerticesSplit += sheets.sheetCount - 1u;
-        surface_.stats.nonManifoldEdgesSplit += config.fourQuadEdgesForward;
+        point.firstVertex = uint32_t(positions.size());
+        positions.insert(positions.end(), sheetsOf(point).sheetCount, glm::vec3(x, y, z));
+        count(point, stats);
+        if (y == sharedY_)
+            sharedPoints.push_back(LatticePointMap::key(x, y, z));
     }
 
     const VoxelVolume &solid_;
-    BoundarySurface &surface_;
     LatticePointMap points_;
+    int sharedY_;
+};
+
+// A slab of the volume needs this many column runs to be meshed on a thread of its own.
+constexpr size_t kLeastSlabRuns = size_t(1) << 12;
+
+// One slab's faces, their quads (numbered by its own vertices) and those vertices.
+struct Slab {
+    int y0 = 0, y1 = 0;  // voxel rows y0 <= y < y1
+    std::vector<BoundaryFace> faces;
+    std::vector<Voxel> voxels;
+    std::vector<uint32_t> quads;
+    std::unique_ptr<SheetVertices> vertices;
 };
 
 }  // namespace
 
-BoundarySurface extractBoundarySurface(const VoxelVolume &volume) {
+// In slabs. The faces are collected row by row (y-major), so slabs of rows meet only on the
+// lattice plane y = y0 between two slabs, and one slab's faces follow the one's before it. Each
+// slab numbers its own vertices from 0 in first-reached order; then, slab by slab, its points on
+// the plane that the slab before it made too take that slab's vertices, and its other vertices
+// are numbered on in their order. That is the numbering of one scan of all faces: the same surface
+// for any count.
+BoundarySurface extractBoundarySurface(const VoxelVolume &volume, int threads) {
     BoundarySurface surface;
     const VoxelVolume solid = fillEnclosedCavities(volume, &surface.stats.cavityVoxelsFilled);
-    std::vector<BoundaryFace> faces;
-    collectBoundaryFaces(solid, faces, surface.quadVoxels);
 
-    SheetVertices vertices(solid, faces.size(), surface);
-    surface.quads.resize(4 * faces.size());
-    uint32_t *out = surface.quads.data();
-    for (const BoundaryFace &face : faces) {
-        for (const CornerStep &c : kCornerSteps[face.direction])
-            *out++ = vertices.vertex(face.x + c.dx, face.y + c.dy, face.z + c.dz, c.slot);
+    // Rows cut where the runs before reach each slab's share.
+    const int workers = bandThreads(threads, std::max<size_t>(1, solid.runs.size() / kLeastSlabRuns));
+    std::vector<Slab> slabs(1);
+    for (int y = 0, s = 1; y < solid.sizeY && s < workers; ++y) {
+        const size_t runsBefore = solid.columnFirstRun[solid.columnIndex(0, y)];
+        if (runsBefore >= solid.runs.size() * size_t(s) / size_t(workers)) {
+            if (y > slabs.back().y0) {
+                slabs.back().y1 = y;
+                slabs.emplace_back().y0 = y;
+            }
+            ++s;
+        }
+    }
+    slabs.back().y1 = std::max(solid.sizeY, 0);
+
+    runBands(slabs.size(), int(slabs.size()), [&](size_t s) {
+        Slab &slab = slabs[s];
+        collectBoundaryFaces(solid, slab.y0, slab.y1, slab.faces, slab.voxels);
+        slab.vertices = std::make_unique<SheetVertices>(solid, slab.faces.size(), s == 0 ? -1 : slab.y0);
+        slab.quads.resize(4 * slab.faces.size());
+        uint32_t *out = slab.quads.data();
+        for (const BoundaryFace &face : slab.faces) {
+            for (const CornerStep &c : kCornerSteps[face.direction])
+                *out++ = slab.vertices->vertex(face.x + c.dx, face.y + c.dy, face.z + c.dz, c.slot);
+        }
+    });
+
+    if (slabs.size() == 1) {
+        surface.positions = std::move(slabs[0].vertices->positions);
+        surface.quads = std::move(slabs[0].quads);
+        surface.quadVoxels = std::move(slabs[0].voxels);
+    } else {
+        size_t faces = 0;
+        for (const Slab &slab : slabs)
+            faces += slab.faces.size();
+        surface.quads.reserve(4 * faces);
+        surface.quadVoxels.reserve(faces);
+    }
+    constexpr uint32_t kUnset = std::numeric_limits<uint32_t>::max();
+    std::vector<uint32_t> before, number;  // the slab before's final vertex numbers, this slab's
+    for (size_t s = 0; s < slabs.size() && slabs.size() > 1; ++s) {
+        SheetVertices &vertices = *slabs[s].vertices;
+        number.assign(vertices.positions.size(), kUnset);
+        BoundarySurfaceStats shared;  // what the points made before count already
+        for (const uint64_t key : vertices.sharedPoints) {
+            const LatticePointMap::Entry *old = slabs[s - 1].vertices->points().find(key);
+            if (old == nullptr)
+                continue;
+            const LatticePointMap::Entry &point = *vertices.points().find(key);
+            for (uint32_t i = 0; i < SheetVertices::sheetsOf(point).sheetCount; ++i)
+                number[point.firstVertex + i] = before[old->firstVertex + i];
+            SheetVertices::count(point, shared);
+        }
+        for (size_t v = 0; v < number.size(); ++v)
+            if (number[v] == kUnset) {
+                number[v] = uint32_t(surface.positions.size());
+                surface.positions.push_back(vertices.positions[v]);
+            }
+        for (const uint32_t v : slabs[s].quads)
+            surface.quads.push_back(number[v]);
+        surface.quadVoxels.insert(surface.quadVoxels.end(), slabs[s].voxels.begin(), slabs[s].voxels.end());
+        vertices.stats.nonManifoldEdgesSplit -= shared.nonManifoldEdgesSplit;
+        vertices.stats.nonManifoldVerticesSplit -= shared.nonManifoldVerticesSplit;
+        vertices.stats.pinchedEdgesJoined -= shared.pinchedEdgesJoined;
+        before.swap(number);
+    }
+    for (const Slab &slab : slabs) {
+        surface.stats.nonManifoldEdgesSplit += slab.vertices->stats.nonManifoldEdgesSplit;
+        surface.stats.nonManifoldVerticesSplit += slab.vertices->stats.nonManifoldVerticesSplit;
+        surface.stats.pinchedEdgesJoined += slab.vertices->stats.pinchedEdgesJoined;
     }
     return surface;
 }

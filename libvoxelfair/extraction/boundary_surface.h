@@ -42,7 +42,9 @@ struct BoundarySurface {
 };
 
 // Extracts the manifold boundary surface of `volume`. Enclosed cavities are filled first (no
-// quads inside). Runs in time proportional to the number of runs and boundary quads.
-BoundarySurface extractBoundarySurface(const VoxelVolume &volume);
+// quads inside). Runs in time proportional to the number of runs and boundary quads. The corners
+// are welded in slabs of the volume on up to `threads` threads (0: one per hardware thread), for
+// larger surfaces: the same surface, vertex numbers and quad order for any count.
+BoundarySurface extractBoundarySurface(const VoxelVolume &volume, int threads = 1);
 
 }  // namespace voxelfair

@@ -41,6 +41,16 @@ public:
         return {&slots_[i], false};
     }
 
+    // The entry for `key`, or nullptr when it was never inserted.
+    const Entry *find(uint64_t key) const {
+        for (size_t i = slotIndex(key);; i = (i + 1) & mask_) {
+            if (slots_[i].key == key)
+                return &slots_[i];
+            if (slots_[i].key == kEmpty)
+                return nullptr;
+        }
+    }
+
     size_t size() const { return size_; }
 
 private:

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <exception>
+#include <limits>
 #include <vector>
 
 #include <glm/mat3x3.hpp>
@@ -65,17 +66,26 @@ SceneSurface extractSceneSurface(const VoxelScene &scene, int threads) {
             }
         surfaces.assign(count, BoundarySurface{});
         failures.assign(count, nullptr);
-        const int workers = voxels >= kLeastParallelVoxels ? bandThreads(threads, busy) : 1;
-        runBands(count, workers, [&](size_t k) {
+        const int allThreads =
+            voxels >= kLeastParallelVoxels ? bandThreads(threads, std::numeric_limits<size_t>::max()) : 1;
+        auto extract = [&](size_t k, int partThreads) {
             const PlacedVolume &part = scene.parts[first + k];
             if (!hasVoxels(part))
                 return;
             try {
-                surfaces[k] = extractBoundarySurface(*part.volume);
+                surfaces[k] = extractBoundarySurface(*part.volume, partThreads);
             } catch (...) {  // rethrown below, in part order
                 failures[k] = std::current_exception();
             }
-        });
+        };
+        // A part holding half the window's voxels or more is meshed in slabs on all threads (the
+        // others would wait for it), beside the rest.
+        size_t largest = count;
+        for (size_t k = 0; k < count && allThreads > 1; ++k)
+            if (hasVoxels(scene.parts[first + k]) && 2 * scene.parts[first + k].volume->voxelCount() >= voxels)
+                largest = k;
+        runBands(count, std::min(allThreads, bandThreads(threads, busy)),
+                 [&](size_t k) { extract(k, k == largest ? allThreads : 1); });
         for (size_t k = 0; k < count; ++k) {
             if (failures[k])
                 std::rethrow_exception(failures[k]);

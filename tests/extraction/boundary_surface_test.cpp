@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <numeric>
 #include <string>
 #include <unordered_map>
@@ -434,4 +435,36 @@ TEST(BoundarySurface, WorksInTheLargestVolumeWithoutTouchingItsBoundingBox) {
     EXPECT_EQ(s.stats.cavityVoxelsFilled, 27u);
     for (const glm::vec3 &p : s.positions)
         EXPECT_EQ(std::max({p.x, p.y, p.z}) <= float(kMaxVolumeSide), true);
+}
+
+// Welding in slabs of rows on several threads gives the one-thread surface bit for bit: the same
+// positions, vertex numbers, quad order, voxels and counts, on grids noisy enough that the slabs
+// meet on planes full of split vertices, joined tunnels and filled cavities.
+TEST(BoundarySurface, SlabsOnAnyThreadCountGiveTheSameSurface) {
+    uint32_t seed = 7;
+    for (const double density : {0.3, 0.5, 0.7}) {
+        SCOPED_TRACE(testing::Message() << "density " << density);
+        const VoxelVolume volume = randomGrid(72, 64, 40, density, seed++).toVolume();
+        ASSERT_GE(volume.runs.size(), size_t(7) << 12);  // enough runs for seven slabs
+        const BoundarySurface one = extractBoundarySurface(volume, 1);
+        EXPECT_GT(one.stats.nonManifoldVerticesSplit, 0u);
+        EXPECT_GT(one.stats.nonManifoldEdgesSplit, 0u);
+        EXPECT_GT(one.stats.pinchedEdgesJoined, 0u);
+        EXPECT_GT(one.stats.cavityVoxelsFilled, 0u);
+        for (const int threads : {2, 3, 4, 7}) {
+            SCOPED_TRACE(testing::Message() << threads << " threads");
+            const BoundarySurface many = extractBoundarySurface(volume, threads);
+            ASSERT_EQ(many.positions.size(), one.positions.size());
+            EXPECT_EQ(
+                0, std::memcmp(many.positions.data(), one.positions.data(), one.positions.size() * sizeof(glm::vec3)));
+            EXPECT_EQ(many.quads, one.quads);
+            ASSERT_EQ(many.quadVoxels.size(), one.quadVoxels.size());
+            EXPECT_EQ(
+                0, std::memcmp(many.quadVoxels.data(), one.quadVoxels.data(), one.quadVoxels.size() * sizeof(Voxel)));
+            EXPECT_EQ(many.stats.cavityVoxelsFilled, one.stats.cavityVoxelsFilled);
+            EXPECT_EQ(many.stats.nonManifoldEdgesSplit, one.stats.nonManifoldEdgesSplit);
+            EXPECT_EQ(many.stats.nonManifoldVerticesSplit, one.stats.nonManifoldVerticesSplit);
+            EXPECT_EQ(many.stats.pinchedEdgesJoined, one.stats.pinchedEdgesJoined);
+        }
+    }
 }
