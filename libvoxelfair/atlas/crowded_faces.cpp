@@ -219,61 +219,112 @@ CrowdedFaces separateCrowdedFaces(const AtlasMesh &mesh, AtlasCharts &charts, co
     out.separatedFaces = out.crowdedFaces;
 
     // Rebuild the charts: the remaining faces of each chart (re-boxed where faces left), then one
-    // chart per separated face, then the degenerate faces' charts, which stay last.
-    AtlasCharts rebuilt;
-    rebuilt.chartFaces.reserve(entries);
-    rebuilt.wedgeUv.reserve(3 * entries);
-    rebuilt.faceChart.assign(charts.faceCount(), 0);
-    auto addChart = [&](glm::vec3 axis, glm::vec2 size) {
-        rebuilt.chartFirstFace.push_back(uint32_t(rebuilt.chartFaces.size()));
-        rebuilt.chartAxis.push_back(axis);
-        rebuilt.chartSize.push_back(size);
+    // chart per separated face, then the degenerate faces' charts, which stay last. Each chart's
+    // kept faces and box are found on runs of charts side by side, numbered in chart order, then
+    // written side by side, each chart and separated face at its place.
+    const ChartRuns runs = chartRuns(charts, options.threads);
+    struct Kept {
+        uint32_t faces = 0, separated = 0;  // faces staying, faces leaving
+        glm::vec2 lo{0.0f}, hi{0.0f};       // the staying faces' box
+        bool boxed = false;                 // a box was found (the chart stays)
     };
-    auto addFace = [&](uint32_t f, const glm::vec2 *uv) {
-        rebuilt.faceChart[f] = uint32_t(rebuilt.chartAxis.size() - 1);
-        rebuilt.chartFaces.push_back(f);
-        rebuilt.wedgeUv.insert(rebuilt.wedgeUv.end(), uv, uv + 3);
-    };
-    for (uint32_t c = 0; c < charts.chartCount(); ++c) {
-        if (charts.isDegenerate(c))
-            continue;
-        const uint32_t first = charts.chartFirstFace[c], end = charts.chartFirstFace[c + 1];
-        glm::vec2 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-        bool left = false;
-        for (uint32_t i = first; i < end; ++i) {
-            left = left || separated[i];
-            if (!separated[i])
-                for (int k = 0; k < 3; ++k) {
-                    lo = glm::min(lo, charts.wedgeUv[3 * i + k]);
-                    hi = glm::max(hi, charts.wedgeUv[3 * i + k]);
-                }
-        }
-        if (hi.x < lo.x)
-            continue;  // every face of the chart left it
-        if (!left)
-            lo = glm::vec2(0.0f), hi = charts.chartSize[c];
-        addChart(charts.chartAxis[c], hi - lo);
-        for (uint32_t i = first; i < end; ++i)
-            if (!separated[i]) {
-                const glm::vec2 uv[3] = {charts.wedgeUv[3 * i] - lo, charts.wedgeUv[3 * i + 1] - lo,
-                                         charts.wedgeUv[3 * i + 2] - lo};
-                addFace(charts.chartFaces[i], uv);
+    std::vector<Kept> kept(chartCount);
+    runBands(runs.count(), runs.workers, [&](size_t run) {
+        for (size_t c = runs.from[run]; c < runs.from[run + 1]; ++c) {
+            if (charts.isDegenerate(c))
+                continue;
+            const uint32_t first = charts.chartFirstFace[c], end = charts.chartFirstFace[c + 1];
+            glm::vec2 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+            Kept &k = kept[c];
+            for (uint32_t i = first; i < end; ++i) {
+                k.separated += separated[i];
+                if (!separated[i])
+                    for (int j = 0; j < 3; ++j) {
+                        lo = glm::min(lo, charts.wedgeUv[3 * i + j]);
+                        hi = glm::max(hi, charts.wedgeUv[3 * i + j]);
+                    }
             }
-    }
-    for (uint32_t i = 0; i < entries; ++i)
-        if (separated[i]) {
-            glm::vec2 uv[3], size;
-            glm::vec3 axis;
-            projectAlone(mesh, charts.chartFaces[i], uv, axis, size);
-            addChart(axis, size);
-            addFace(charts.chartFaces[i], uv);
+            k.faces = end - first - k.separated;
+            k.boxed = !(hi.x < lo.x);
+            if (k.separated == 0)
+                lo = glm::vec2(0.0f), hi = charts.chartSize[c];
+            k.lo = lo;
+            k.hi = hi;
         }
-    for (uint32_t c = 0; c < charts.chartCount(); ++c)
+    });
+    // Per chart: its new number (kNoChart when all its faces left: no box), its first entry, and
+    // the new chart of its first separated face.
+    constexpr uint32_t kNoChart = std::numeric_limits<uint32_t>::max();
+    std::vector<uint32_t> number(chartCount, kNoChart), at(chartCount, 0), alone(chartCount, 0);
+    uint32_t keptCharts = 0, keptEntries = 0, degenerateCharts = 0;
+    for (uint32_t c = 0; c < chartCount; ++c) {
         if (charts.isDegenerate(c)) {
-            addChart(charts.chartAxis[c], charts.chartSize[c]);
-            addFace(charts.chartFaces[charts.chartFirstFace[c]], &charts.wedgeUv[3 * size_t(charts.chartFirstFace[c])]);
+            ++degenerateCharts;
+        } else if (kept[c].boxed) {
+            number[c] = keptCharts++;
+            at[c] = keptEntries;
+            keptEntries += kept[c].faces;
         }
-    rebuilt.chartFirstFace.push_back(uint32_t(rebuilt.chartFaces.size()));
+    }
+    uint32_t separatedCount = 0;
+    for (uint32_t c = 0; c < chartCount; ++c) {
+        alone[c] = keptCharts + separatedCount;
+        separatedCount += charts.isDegenerate(c) ? 0 : kept[c].separated;
+    }
+    const size_t newCharts = size_t(keptCharts) + separatedCount + degenerateCharts;
+    const size_t newEntries = size_t(keptEntries) + separatedCount + degenerateCharts;
+    AtlasCharts rebuilt;
+    rebuilt.chartFirstFace.resize(newCharts + 1);
+    rebuilt.chartAxis.resize(newCharts);
+    rebuilt.chartSize.resize(newCharts);
+    rebuilt.chartFaces.resize(newEntries);
+    rebuilt.wedgeUv.resize(3 * newEntries);
+    rebuilt.faceChart.assign(charts.faceCount(), 0);
+    // Chart n starting at entry e, holding face f with UVs uv (the first of its faces).
+    auto place = [&](uint32_t n, uint32_t e, uint32_t f, const glm::vec2 *uv) {
+        rebuilt.faceChart[f] = n;
+        rebuilt.chartFaces[e] = f;
+        std::copy_n(uv, 3, &rebuilt.wedgeUv[3 * size_t(e)]);
+    };
+    runBands(runs.count(), runs.workers, [&](size_t run) {
+        for (size_t c = runs.from[run]; c < runs.from[run + 1]; ++c) {
+            if (charts.isDegenerate(c))
+                continue;
+            const uint32_t first = charts.chartFirstFace[c], end = charts.chartFirstFace[c + 1];
+            const Kept &k = kept[c];
+            if (number[c] != kNoChart) {
+                rebuilt.chartFirstFace[number[c]] = at[c];
+                rebuilt.chartAxis[number[c]] = charts.chartAxis[c];
+                rebuilt.chartSize[number[c]] = k.hi - k.lo;
+            }
+            uint32_t e = at[c], n = alone[c];
+            for (uint32_t i = first; i < end; ++i) {
+                if (!separated[i]) {
+                    if (number[c] == kNoChart)
+                        continue;
+                    const glm::vec2 uv[3] = {charts.wedgeUv[3 * i] - k.lo, charts.wedgeUv[3 * i + 1] - k.lo,
+                                             charts.wedgeUv[3 * i + 2] - k.lo};
+                    place(number[c], e++, charts.chartFaces[i], uv);
+                    continue;
+                }
+                glm::vec2 uv[3];
+                projectAlone(mesh, charts.chartFaces[i], uv, rebuilt.chartAxis[n], rebuilt.chartSize[n]);
+                rebuilt.chartFirstFace[n] = keptEntries + (n - keptCharts);
+                place(n, keptEntries + (n - keptCharts), charts.chartFaces[i], uv);
+                ++n;
+            }
+        }
+    });
+    for (uint32_t c = 0, n = keptCharts + separatedCount; c < chartCount; ++c)
+        if (charts.isDegenerate(c)) {
+            rebuilt.chartAxis[n] = charts.chartAxis[c];
+            rebuilt.chartSize[n] = charts.chartSize[c];
+            rebuilt.chartFirstFace[n] = n - keptCharts + keptEntries;
+            place(n, n - keptCharts + keptEntries, charts.chartFaces[charts.chartFirstFace[c]],
+                  &charts.wedgeUv[3 * size_t(charts.chartFirstFace[c])]);
+            ++n;
+        }
+    rebuilt.chartFirstFace[newCharts] = uint32_t(newEntries);
 
     charts.swapCharts(rebuilt);
     charts.separatedFaces += out.separatedFaces;

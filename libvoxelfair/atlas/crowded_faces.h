@@ -39,7 +39,8 @@ struct CrowdedFaceOptions {
     double texelsPerUnit = 4.0;
     // The most faces separated, as a share of all faces; beyond it none is.
     double maxSeparatedShare = 0.1;
-    // Threads searching the charts (0: one per hardware thread); the result is the same for any count.
+    // Threads searching the charts and rebuilding them (0: one per hardware thread); the result is
+    // the same for any count.
     int threads = 0;
 };
 

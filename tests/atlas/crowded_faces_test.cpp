@@ -126,8 +126,9 @@ TEST(CrowdedFaces, FixedTextureSizeIsSeparatedForTheDensityFound) {
     }
 }
 
-// The charts are searched on threads and summed in chart order: any thread count separates the
-// same faces into the same charts and counts the same, also where the search stops over the budget.
+// The charts are searched on threads and summed in chart order, and rebuilt on threads: any thread
+// count separates the same faces into the same charts and counts the same, also where the search
+// stops over the budget.
 TEST(CrowdedFaces, AnyThreadCountSeparatesTheSameFaces) {
     const TestMesh mesh = paperFaired(voxelSphere(16));
     ASSERT_GE(mesh.faceCount(), 4096u);  // enough faces to be searched on threads
@@ -153,6 +154,8 @@ TEST(CrowdedFaces, AnyThreadCountSeparatesTheSameFaces) {
             EXPECT_EQ(many.chartFaces, one.chartFaces);
             EXPECT_EQ(many.faceChart, one.faceChart);
             EXPECT_EQ(many.wedgeUv, one.wedgeUv);
+            EXPECT_EQ(many.chartAxis, one.chartAxis);
+            EXPECT_EQ(many.chartSize, one.chartSize);
         }
     }
     EXPECT_TRUE(sawSeparated);
