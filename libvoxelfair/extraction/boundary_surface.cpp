@@ -185,39 +185,47 @@ BoundarySurface extractBoundarySurface(const VoxelVolume &volume, int threads) {
         surface.quads = std::move(slabs[0].quads);
         surface.quadVoxels = std::move(slabs[0].voxels);
     } else {
-        size_t faces = 0;
-        for (const Slab &slab : slabs)
-            faces += slab.faces.size();
-        surface.quads.reserve(4 * faces);
-        surface.quadVoxels.reserve(faces);
-    }
-    constexpr uint32_t kUnset = std::numeric_limits<uint32_t>::max();
-    std::vector<uint32_t> before, number;  // the slab before's final vertex numbers, this slab's
-    for (size_t s = 0; s < slabs.size() && slabs.size() > 1; ++s) {
-        SheetVertices &vertices = *slabs[s].vertices;
-        number.assign(vertices.positions.size(), kUnset);
-        BoundarySurfaceStats shared;  // what the points made before count already
-        for (const uint64_t key : vertices.sharedPoints) {
-            const LatticePointMap::Entry *old = slabs[s - 1].vertices->points().find(key);
-            if (old == nullptr)
-                continue;
-            const LatticePointMap::Entry &point = *vertices.points().find(key);
-            for (uint32_t i = 0; i < SheetVertices::sheetsOf(point).sheetCount; ++i)
-                number[point.firstVertex + i] = before[old->firstVertex + i];
-            SheetVertices::count(point, shared);
-        }
-        for (size_t v = 0; v < number.size(); ++v)
-            if (number[v] == kUnset) {
-                number[v] = uint32_t(surface.positions.size());
-                surface.positions.push_back(vertices.positions[v]);
+        // Numbered slab by slab (each after the one before), then copied side by side.
+        constexpr uint32_t kUnset = std::numeric_limits<uint32_t>::max();
+        std::vector<std::vector<uint32_t>> number(slabs.size());  // per slab, its vertices' final numbers
+        std::vector<size_t> firstQuad(slabs.size() + 1, 0);
+        std::vector<uint32_t> firstNew(slabs.size(), 0);  // per slab, its first vertex not shared
+        uint32_t vertexCount = 0;
+        for (size_t s = 0; s < slabs.size(); ++s) {
+            SheetVertices &vertices = *slabs[s].vertices;
+            number[s].assign(vertices.positions.size(), kUnset);
+            BoundarySurfaceStats shared;  // what the points made before count already
+            for (const uint64_t key : vertices.sharedPoints) {
+                const LatticePointMap::Entry *old = slabs[s - 1].vertices->points().find(key);
+                if (old == nullptr)
+                    continue;
+                const LatticePointMap::Entry &point = *vertices.points().find(key);
+                for (uint32_t i = 0; i < SheetVertices::sheetsOf(point).sheetCount; ++i)
+                    number[s][point.firstVertex + i] = number[s - 1][old->firstVertex + i];
+                SheetVertices::count(point, shared);
             }
-        for (const uint32_t v : slabs[s].quads)
-            surface.quads.push_back(number[v]);
-        surface.quadVoxels.insert(surface.quadVoxels.end(), slabs[s].voxels.begin(), slabs[s].voxels.end());
-        vertices.stats.nonManifoldEdgesSplit -= shared.nonManifoldEdgesSplit;
-        vertices.stats.nonManifoldVerticesSplit -= shared.nonManifoldVerticesSplit;
-        vertices.stats.pinchedEdgesJoined -= shared.pinchedEdgesJoined;
-        before.swap(number);
+            firstNew[s] = vertexCount;
+            for (uint32_t &n : number[s])
+                if (n == kUnset)
+                    n = vertexCount++;
+            firstQuad[s + 1] = firstQuad[s] + slabs[s].faces.size();
+            vertices.stats.nonManifoldEdgesSplit -= shared.nonManifoldEdgesSplit;
+            vertices.stats.nonManifoldVerticesSplit -= shared.nonManifoldVerticesSplit;
+            vertices.stats.pinchedEdgesJoined -= shared.pinchedEdgesJoined;
+        }
+        surface.positions.resize(vertexCount);
+        surface.quads.resize(4 * firstQuad.back());
+        surface.quadVoxels.resize(firstQuad.back());
+        runBands(slabs.size(), int(slabs.size()), [&](size_t s) {
+            const std::vector<glm::vec3> &positions = slabs[s].vertices->positions;
+            for (size_t v = 0; v < positions.size(); ++v)
+                if (number[s][v] >= firstNew[s])  // not shared: the slab before wrote those
+                    surface.positions[number[s][v]] = positions[v];
+            uint32_t *quads = surface.quads.data() + 4 * firstQuad[s];
+            for (const uint32_t v : slabs[s].quads)
+                *quads++ = number[s][v];
+            std::copy(slabs[s].voxels.begin(), slabs[s].voxels.end(), surface.quadVoxels.begin() + firstQuad[s]);
+        });
     }
     for (const Slab &slab : slabs) {
         surface.stats.nonManifoldEdgesSplit += slab.vertices->stats.nonManifoldEdgesSplit;
