@@ -1,5 +1,7 @@
 #include "fairing/voxel_size.h"
 
+#include "base/parallel_bands.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -10,7 +12,7 @@
 
 namespace voxelfair {
 
-float detectVoxelSize(const PolygonMesh &mesh, float expected) {
+float detectVoxelSize(const PolygonMesh &mesh, float expected, int threads) {
     const glm::vec3 *const positions = mesh.positions;
     const size_t vertexCount = mesh.vertexCount, polygonCount = mesh.polygonCount;
     const uint32_t *const polygonOffsets = mesh.polygonOffsets, *const polygonIndices = mesh.polygonIndices;
@@ -22,31 +24,43 @@ float detectVoxelSize(const PolygonMesh &mesh, float expected) {
 
     // (bin, length): bin = round(log(length) / log(1 + 1e-3)), i.e. 1e-3 relative bins.
     const double binsPerLog = 1.0 / std::log1p(1e-3);
-    std::vector<std::pair<long, float>> lengths;
-    lengths.reserve(std::min(indexCount, 2 * kMaxEdges));
-    // A voxel mesh's edges mostly repeat one length exactly (the voxel's, before fairing): the
-    // last length's bin is kept, so the logarithm is taken when the length changes.
-    float lastLength = 0.0f;
-    long lastBin = 0;
-    for (size_t p = 0; p < polygonCount; p += stride) {
-        const uint32_t first = polygonOffsets[p], last = polygonOffsets[p + 1];
-        if (last <= first + 1 || last > indexCount)
-            continue;
-        for (uint32_t i = first; i < last; ++i) {
-            const uint32_t a = polygonIndices[i];
-            const uint32_t b = polygonIndices[i + 1 < last ? i + 1 : first];
-            if (a >= vertexCount || b >= vertexCount)
+    // Sampled polygons p = j * stride, j < samples, measured in bands of j on up to `threads`
+    // threads, each band's lengths in its own list, joined in band order: the list of one scan.
+    const size_t samples = (polygonCount + stride - 1) / stride;
+    constexpr size_t kLeastBandSamples = size_t(1) << 13;
+    const size_t bands = size_t(bandThreads(threads, std::max<size_t>(1, samples / kLeastBandSamples)));
+    std::vector<std::vector<std::pair<long, float>>> bandLengths(bands);
+    runBands(bands, int(bands), [&](size_t band) {
+        std::vector<std::pair<long, float>> &lengths = bandLengths[band];
+        lengths.reserve(std::min(indexCount, 2 * kMaxEdges) / bands + 64);
+        // A voxel mesh's edges mostly repeat one length exactly (the voxel's, before fairing): the
+        // last length's bin is kept, so the logarithm is taken when the length changes.
+        float lastLength = 0.0f;
+        long lastBin = 0;
+        for (size_t j = samples * band / bands; j < samples * (band + 1) / bands; ++j) {
+            const size_t p = j * stride;
+            const uint32_t first = polygonOffsets[p], last = polygonOffsets[p + 1];
+            if (last <= first + 1 || last > indexCount)
                 continue;
-            const float length = glm::length(positions[b] - positions[a]);
-            if (!(length > 0.0f) || !std::isfinite(length))
-                continue;
-            if (length != lastLength) {
-                lastLength = length;
-                lastBin = std::lround(std::log(double(length)) * binsPerLog);
+            for (uint32_t i = first; i < last; ++i) {
+                const uint32_t a = polygonIndices[i];
+                const uint32_t b = polygonIndices[i + 1 < last ? i + 1 : first];
+                if (a >= vertexCount || b >= vertexCount)
+                    continue;
+                const float length = glm::length(positions[b] - positions[a]);
+                if (!(length > 0.0f) || !std::isfinite(length))
+                    continue;
+                if (length != lastLength) {
+                    lastLength = length;
+                    lastBin = std::lround(std::log(double(length)) * binsPerLog);
+                }
+                lengths.emplace_back(lastBin, length);
             }
-            lengths.emplace_back(lastBin, length);
         }
-    }
+    });
+    std::vector<std::pair<long, float>> lengths = std::move(bandLengths[0]);
+    for (size_t band = 1; band < bands; ++band)
+        lengths.insert(lengths.end(), bandLengths[band].begin(), bandLengths[band].end());
     if (lengths.empty())
         return 0.0f;
     if (expected > 0.0f && std::isfinite(expected)) {

@@ -27,6 +27,9 @@ namespace voxelfair {
 // 20 shared models faired by the paper's pass have their most common edge at 0.12-0.84 voxels.
 // A mesh rescaled since has no edge of the expected length left, and its size is detected as
 // without one.
-float detectVoxelSize(const PolygonMesh &mesh, float expected = 0.0f);
+//
+// The edges are measured on up to `threads` threads (0: one per hardware thread) on larger
+// meshes; the size is the same for any count.
+float detectVoxelSize(const PolygonMesh &mesh, float expected = 0.0f, int threads = 1);
 
 }  // namespace voxelfair

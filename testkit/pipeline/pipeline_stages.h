@@ -248,7 +248,7 @@ inline QuadMesh extract(const VoxelScene &scene) {
         mesh.quadPaletteIndex.push_back(v.colour);
     for (size_t part = 0; part < surface.partQuadCounts.size(); ++part)
         mesh.quadPart.insert(mesh.quadPart.end(), surface.partQuadCounts[part], uint32_t(part));
-    const float size = detectVoxelSize(mesh.view());
+    const float size = detectVoxelSize(mesh.view(), 0.0f, 0);
     mesh.voxelSize = size > 0.0f ? size : 1.0f;
     return mesh;
 }
