@@ -108,6 +108,10 @@ constexpr double kFillHeightAim = 0.97;
 constexpr double kLeastFillGain = 1.04;
 // A larger model's first fill aim this close above its fallback (below) is not tried first.
 constexpr double kCloseFillAims = 1.03;
+// The share of the first texture shape a larger model's masks are first packed to fill by their
+// room (packCharts), below what the tight packer fills on any larger model seen: the synthetic
+// tank's large charts fill 0.71 of the rows they reach, the shared models 0.76 to 0.99.
+constexpr double kFirstFillShare = 0.68;
 
 // The factor on the density of `masks` (packed with the tight packer, fitting) at which the
 // charts' room, estimated from the masks (each mask's core scaled, its padding and conservative
@@ -168,15 +172,19 @@ ChartExtent chartExtent(const AtlasCharts &charts) {
     return e;
 }
 
+// Just above the densest the charts could take in a side x height rectangle: their projected area
+// cannot exceed it, nor a chart its side.
+double densityBound(const ChartExtent &extent, int side, int height) {
+    double bound = extent.area > 0 ? std::sqrt(double(side) * height / extent.area) : 1.0;
+    if (extent.longest > 0)
+        bound = std::min(bound, side / extent.longest);
+    return bound * 1.0001;
+}
+
 bool densestFit(const AtlasCharts &charts, const ChartExtent &extent, const PackOptions &o, int padding, int side,
                 int height, double ceiling, Packing &best, double &density, size_t &attempts, double known = 0,
                 double knownFilled = 0, double knownReached = 0, double start = 0) {
-    // Upper bound: the charts' projected area cannot exceed the texture, nor a chart its side.
-    const double area = extent.area, longest = extent.longest;
-    double miss = area > 0 ? std::sqrt(double(side) * height / area) : 1.0;
-    if (longest > 0)
-        miss = std::min(miss, side / longest);
-    miss = std::min(miss * 1.0001, ceiling);
+    double miss = std::min(densityBound(extent, side, height), ceiling);
     const double floor = miss * 1e-4;  // below this only the fixed-size parts (gutters) remain
     double fit = known, d = miss * 0.85, reachable = 0.9, fitFilled = knownFilled, fallback = 0;
     if (known > 0) {
@@ -312,8 +320,11 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
         const bool wide = options.allowWide && options.mode == PackMode::Tight;
         bool fits = false;
         double filled = 0, reached = 0;
-        ++out.packAttempts;
-        if (rasterize(charts, out.texelsPerUnit, padding, maxSide, options.threads, packing)) {
+        int firstSide = 0, firstHeight = 0;  // the first shape tried
+        double firstMiss = INFINITY;         // a density known to miss it
+        if (!rasterize(charts, out.texelsPerUnit, padding, maxSide, options.threads, packing)) {
+            ++out.packAttempts;  // a chart alone is larger than the largest texture
+        } else {
             const int b = packing.block;
             int longest = 1, longestShort = 1;
             for (const ChartMask &m : packing.packed().charts) {
@@ -326,8 +337,35 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
             height = side;
             if (wide && side > 1 && double(side) * side / 2 >= room && side / 2 >= longestShort)
                 height = side / 2;
-            for (out.size = side; out.size <= maxSide; nextShape(wide, out.size, height)) {
+            // A larger model (costly packings) whose masks take little of the first shape is packed
+            // first where their room fills kFirstFillShare of it: a fit there also holds the
+            // charts at the asked density, and skips packing them at it. A miss bounds the fill.
+            firstSide = side, firstHeight = height;
+            if (options.fillTexture && options.mode == PackMode::Tight && side <= maxSide && side >= longest &&
+                height >= longestShort && charts.faceCount() > size_t(std::max(0, options.cheapFillFaces))) {
+                const double asked = out.texelsPerUnit;
+                const double aim = asked * fillScale(packing, side, height, kFirstFillShare,
+                                                     densityBound(extentOf(), side, height) / asked);
+                if (aim >= asked * kLeastFillGain) {
+                    Packing trial;
+                    trial.block = packing.block;
+                    trial.sharedEdges = packing.sharedEdges;
+                    const Fit f = attempt(charts, options, aim, padding, side, height, trial, out.packAttempts);
+                    if (f.fits) {
+                        out.size = side;
+                        out.texelsPerUnit = aim;
+                        fits = true;
+                        filled = f.filled;
+                        reached = f.reached;
+                        std::swap(packing, trial);
+                    } else {
+                        firstMiss = aim;
+                    }
+                }
+            }
+            for (out.size = side; !fits && out.size <= maxSide; nextShape(wide, out.size, height)) {
                 if (out.size >= longest && height >= longestShort) {
+                    ++out.packAttempts;
                     const Fit f =
                         place(packing, options.mode, out.size, height, options.allowRotation, options.threads);
                     if (f.fits) {
@@ -336,14 +374,14 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
                         reached = f.reached;
                         break;
                     }
-                    ++out.packAttempts;
                 }
             }
         }
         if (fits && options.fillTexture && options.mode == PackMode::Tight) {
             // The density is a minimum: raise it to fill the texture chosen.
             double density = out.texelsPerUnit;
-            if (densestFit(charts, extentOf(), options, padding, out.size, height, INFINITY, packing, density,
+            const double ceiling = out.size == firstSide && height == firstHeight ? firstMiss : INFINITY;
+            if (densestFit(charts, extentOf(), options, padding, out.size, height, ceiling, packing, density,
                            out.packAttempts, out.texelsPerUnit, filled, reached))
                 out.texelsPerUnit = density;
             // Small textures whose charts' rims leave the charts too little of them: the larger

@@ -124,7 +124,7 @@ struct AtlasLayout {
     // width x height texture covers [x, x+1]/width x [y, y+1]/height.
     std::vector<glm::vec2> wedgeUv;
     std::vector<ChartPlacement> placements;  // per chart, in texels
-    size_t packAttempts = 0;                 // packings tried while searching the density
+    size_t packAttempts = 0;                 // packings (placements) tried while searching the density
     size_t nudgedFaces = 0;                  // slivers whose float UVs had lost their area, given 1/64 texel back
 };
 

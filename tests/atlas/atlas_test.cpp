@@ -912,3 +912,35 @@ TEST(Packing, AStartDensityNearTheAnswerSavesPackings) {
     }
     EXPECT_LT(nearStart, fromScratch);
 }
+
+// A larger model's masks that fill little of the first texture shape are packed first where their
+// room fills most of it (packCharts, kFirstFillShare): on a fit, nearly full, that is the only
+// packing (the masks at the asked density are only measured). Every model is "larger" here
+// (cheapFillFaces 0). The texture is
+// never larger than the smallest that holds the asked density, which stays a minimum.
+TEST(Packing, ALargerModelIsFirstPackedWhereItFillsTheTexture) {
+    const std::vector<TestMesh> shapes = {smoothed(voxelSphere(9)), smoothed(voxelTorus(10, 4)),
+                                          smoothed(voxelBlob(8, 3)), smoothed(voxelBox(9, 5, 3))};
+    size_t once = 0, cases = 0;
+    for (const TestMesh &shape : shapes) {
+        const AtlasCharts charts = computeCharts(shape.view());
+        for (float density : {2.0f, 3.3f, 5.0f, 8.0f}) {
+            PackOptions options;
+            options.texelsPerUnit = density;
+            options.cheapFillFaces = 0;
+            options.leastChartShare = 0;  // small textures do not step up here
+            PackOptions asked = options;
+            asked.fillTexture = false;
+            const AtlasLayout least = packCharts(charts, asked), layout = packCharts(charts, options);
+            SCOPED_TRACE(shape.name + " at " + std::to_string(density));
+            expectValidAtlas(shape, charts, layout, kMergeCone);
+            EXPECT_GE(layout.texelsPerUnit, density);
+            EXPECT_LE(int64_t(layout.width) * layout.height, int64_t(least.width) * least.height);
+            EXPECT_GE(measureAtlas(shape.view(), charts, layout).packingEfficiency,
+                      measureAtlas(shape.view(), charts, least).packingEfficiency);
+            ++cases;
+            once += layout.packAttempts == 1 && layout.texelsPerUnit >= density * 1.04;
+        }
+    }
+    EXPECT_GE(once, 2u) << "packed once, at the aim, in " << once << " of " << cases;
+}

@@ -62,7 +62,8 @@ TestMesh fan() {
 }
 
 TestMesh plateWithHole() {
-    return voxelSurface("plate with a hole", 9, 9, 1, [](int x, int y, int) { return !(x >= 3 && x <= 5 && y >= 3 && y <= 5); });
+    return voxelSurface("plate with a hole", 9, 9, 1,
+                        [](int x, int y, int) { return !(x >= 3 && x <= 5 && y >= 3 && y <= 5); });
 }
 
 std::vector<TestMesh> families() {
@@ -206,7 +207,8 @@ TEST(ChartOutline, BlockMasksMatchRasterisingEveryTriangle) {
                                     double least = INFINITY;
                                     for (int e = 0; e < 3; ++e) {
                                         const glm::dvec2 d = q[(e + 1) % 3] - q[e];
-                                        least = std::min(least, doubleArea(q[e], q[(e + 1) % 3], centre) / glm::length(d));
+                                        least =
+                                            std::min(least, doubleArea(q[e], q[(e + 1) % 3], centre) / glm::length(d));
                                     }
                                     in = in || least > 0;
                                     near = near || std::abs(least) < 1e-9;
