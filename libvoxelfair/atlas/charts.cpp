@@ -10,9 +10,12 @@
 #include "base/parallel_bands.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <thread>
+#include <utility>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -81,20 +84,15 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
     std::vector<FaceNormals> normals(faceCount, FaceNormals{glm::vec3(0.0f), glm::vec3(0.0f)});
     std::vector<uint8_t> degenerate(faceCount, 0);
     std::vector<uint32_t> order, keys;
-    // The normals and the seed order (band 0), and the edge adjacency (band 1), which does not
-    // depend on them: on two threads for larger meshes.
-    EdgeAdjacency adjacency;
-    runBands(2, faceCount >= kLeastParallelFaces ? bandThreads(options.threads, 2) : 1, [&](size_t band) {
-        if (band == 1) {
-            adjacency = buildEdgeAdjacency(mesh.triangles, faceCount, mesh.vertexCount);
-            return;
-        }
-        for (size_t f = 0; f < faceCount; ++f) {
+    // Faces [begin, end)'s normals; returns (non-finite faces, ignored normals).
+    auto faceNormals = [&](size_t begin, size_t end) {
+        std::pair<size_t, size_t> counts{0, 0};
+        for (size_t f = begin; f < end; ++f) {
             const uint32_t *t = mesh.triangles + 3 * f;
             const glm::dvec3 p0 = mesh.positions[t[0]], p1 = mesh.positions[t[1]], p2 = mesh.positions[t[2]];
             if (!finite(glm::vec3(p0)) || !finite(glm::vec3(p1)) || !finite(glm::vec3(p2))) {
                 degenerate[f] = 1;
-                ++out.nonFiniteFaces;
+                ++counts.first;
                 continue;
             }
             const glm::dvec3 cross = glm::cross(p1 - p0, p2 - p0);
@@ -113,12 +111,14 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
                 if (finite(given) && len > 0 && std::isfinite(len) && glm::dot(given / len, n.geometric) >= cone)
                     n.cone = given / len;
                 else
-                    ++out.ignoredNormals;
+                    ++counts.second;
             }
         }
-
-        // Seed order: largest |component| first, face order among equals. For positive floats the
-        // bit pattern orders like the value, so ~bits sorts descending.
+        return counts;
+    };
+    // Seed order: largest |component| first, face order among equals. For positive floats the
+    // bit pattern orders like the value, so ~bits sorts descending.
+    auto seedOrder = [&] {
         order.reserve(faceCount);
         keys.reserve(faceCount);
         for (size_t f = 0; f < faceCount; ++f) {
@@ -132,7 +132,35 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
             keys.push_back(~bits);
         }
         radixSortByKey(order, keys);
-    });
+    };
+    // On two threads for larger meshes: the edge adjacency (which does not depend on the normals)
+    // beside the normals and the seed order. The second thread takes the last fifth of the faces'
+    // normals first (the adjacency takes longer than the sort), the first one waits for them
+    // before it orders the seeds: each face's normal is computed alone, so the same as on one.
+    EdgeAdjacency adjacency;
+    std::pair<size_t, size_t> headCounts{0, 0}, tailCounts{0, 0};
+    if (faceCount >= kLeastParallelFaces && bandThreads(options.threads, 2) == 2) {
+        const size_t split = faceCount - faceCount / 5;
+        std::atomic<bool> tailDone{false};
+        runBands(2, 2, [&](size_t band) {
+            if (band == 1) {
+                tailCounts = faceNormals(split, faceCount);
+                tailDone.store(true, std::memory_order_release);
+                adjacency = buildEdgeAdjacency(mesh.triangles, faceCount, mesh.vertexCount);
+                return;
+            }
+            headCounts = faceNormals(0, split);
+            while (!tailDone.load(std::memory_order_acquire))  // two bands on two threads: never waits on itself
+                std::this_thread::yield();
+            seedOrder();
+        });
+    } else {
+        headCounts = faceNormals(0, faceCount);
+        seedOrder();
+        adjacency = buildEdgeAdjacency(mesh.triangles, faceCount, mesh.vertexCount);
+    }
+    out.nonFiniteFaces = headCounts.first + tailCounts.first;
+    out.ignoredNormals = headCounts.second + tailCounts.second;
     if (adjacency.borderEdges > faceCount) {
         // More border edges than faces: the mesh stores its corners unshared. Match edges by
         // position instead (vertex ids still tell the UV seams apart).

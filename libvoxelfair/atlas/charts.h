@@ -57,10 +57,10 @@ struct ChartOptions {
     // bounding box (a ring of thin bars, a long diagonal bar) is cut by recursive bisection into
     // pieces that cover at least that much. Default 1/8; 0 cuts none.
     float minChartFill = 0.125f;
-    // Threads (0: one per hardware thread): the faces' edge adjacency is built beside their
-    // normals and seed order on a second one, and on meshes of 4096 faces or more the first
-    // pass's fold checks run on two after its charts are grown. The charts are the same for any
-    // count.
+    // Threads (0: one per hardware thread): on meshes of 4096 faces or more, the faces' edge
+    // adjacency is built on a second one beside their normals and seed order (the last fifth of
+    // the normals on that one too), and the first pass's fold checks run on two after its charts
+    // are grown. The charts are the same for any count.
     int threads = 0;
 };
 

@@ -412,6 +412,46 @@ TEST(Charts, FoldChecksOnThreadsGiveTheSameCharts) {
     }
 }
 
+// The faces' normals are computed on both threads (the last fifth on the second, beside the edge
+// adjacency): with non-finite vertices, zero-area faces and given normals (some pointing away, so
+// ignored) in both parts, the charts and their counts are those of one thread.
+TEST(Charts, NormalsOnTwoThreadsGiveTheSameChartsAndCounts) {
+    TestMesh mesh = smoothed(voxelSphere(16));
+    const size_t faces = mesh.faceCount();
+    ASSERT_GE(faces, 4096u);
+    std::vector<glm::vec3> given(faces);
+    for (size_t f = 0; f < faces; ++f) {
+        const uint32_t *t = &mesh.triangles[3 * f];
+        given[f] = glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]], mesh.positions[t[2]] - mesh.positions[t[0]]);
+        if (f % 97 == 0)
+            given[f] = -given[f];  // outside the face's own cone: ignored
+    }
+    for (const size_t f : {size_t(10), faces / 2, faces - faces / 10, faces - 3}) {
+        mesh.positions[mesh.triangles[3 * f]] = glm::vec3(std::numeric_limits<float>::quiet_NaN());
+        mesh.triangles[3 * (f + 1) + 2] = mesh.triangles[3 * (f + 1) + 1];  // zero area
+    }
+    AtlasMesh view = mesh.view();
+    view.faceNormals = given.data();
+    ChartOptions one;
+    one.threads = 1;
+    const AtlasCharts reference = computeCharts(view, one);
+    EXPECT_GT(reference.nonFiniteFaces, 0u);
+    EXPECT_GT(reference.degenerateFaces, reference.nonFiniteFaces);
+    EXPECT_GT(reference.ignoredNormals, 0u);
+    for (int threads : {2, 5}) {
+        ChartOptions options;
+        options.threads = threads;
+        const AtlasCharts charts = computeCharts(view, options);
+        EXPECT_EQ(charts.chartFaces, reference.chartFaces) << threads << " threads";
+        EXPECT_EQ(charts.chartFirstFace, reference.chartFirstFace) << threads << " threads";
+        EXPECT_EQ(charts.wedgeUv, reference.wedgeUv) << threads << " threads";
+        EXPECT_EQ(charts.chartAxis, reference.chartAxis) << threads << " threads";
+        EXPECT_EQ(charts.nonFiniteFaces, reference.nonFiniteFaces) << threads << " threads";
+        EXPECT_EQ(charts.degenerateFaces, reference.degenerateFaces) << threads << " threads";
+        EXPECT_EQ(charts.ignoredNormals, reference.ignoredNormals) << threads << " threads";
+    }
+}
+
 // Two faces at one vertex whose sectors overlap (the chart went round the vertex past a gap)
 // fold the chart though no two boundary edges cross; a full fan of six does not.
 TEST(Charts, SectorsOverlappingAtAVertexAreAFold) {
