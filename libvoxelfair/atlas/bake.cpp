@@ -428,10 +428,17 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
             for (const ThinFace &thin : faces) {
                 if (thin.top < rowFrom || thin.bottom > rowTo)
                     continue;  // none of its rows in this band
-                for (int k = 0; k < 4; ++k)
-                    for (int y = std::max<int>(thin.y0[k], rowFrom); y <= std::min<int>(thin.y1[k], rowTo); ++y)
+                const glm::u8vec3 colour = mesh.faceColours[thin.face];
+                for (int k = 0; k < 4; ++k) {
+                    const int y0 = std::max<int>(thin.y0[k], rowFrom), y1 = std::min<int>(thin.y1[k], rowTo);
+                    if (y0 == y1 && thin.x0[k] == thin.x1[k]) {  // most points: one texel
+                        canvas.paint(canvas.index(thin.x0[k], y0), colour);
+                        continue;
+                    }
+                    for (int y = y0; y <= y1; ++y)
                         for (int x = thin.x0[k]; x <= thin.x1[k]; ++x)
-                            canvas.paint(canvas.index(x, y), mesh.faceColours[thin.face]);
+                            canvas.paint(canvas.index(x, y), colour);
+                }
             }
     });
     out.dilation = options.dilation < 0 ? layout.gutter / 2 : std::min(options.dilation, width);
