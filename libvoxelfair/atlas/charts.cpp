@@ -34,25 +34,30 @@ double diamondAngle(glm::dvec2 d) {
 
 bool finite(const glm::vec3 &v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-// Stable LSD radix sort of `items` by `keys` (ascending), 8 bits per pass, skipping passes where
-// every key has the same digit. Linear time for the seed order of large meshes.
-void radixSortByKey(std::vector<uint32_t> &items, std::vector<uint32_t> &keys) {
-    std::vector<uint32_t> items2(items.size()), keys2(keys.size());
-    for (int shift = 0; shift < 32; shift += 8) {
-        size_t count[257] = {};
-        for (uint32_t k : keys)
-            ++count[((k >> shift) & 0xFF) + 1];
-        if (std::find(count + 1, count + 257, keys.size()) != count + 257)
+// Stable LSD radix sort of 64-bit words by their upper 32 bits (ascending), 12 bits per pass,
+// every digit's histogram taken in one read, passes where every word has the same digit skipped
+// (the seed keys' top digit always is). Linear time for the seed order of large meshes; the
+// order equals any stable sort's.
+void radixSortByHighWord(std::vector<uint64_t> &words) {
+    constexpr int kBits = 12, kDigits = 3;  // 12 + 12 + 8 bits
+    constexpr size_t kRadix = size_t(1) << kBits;
+    const size_t n = words.size();
+    std::vector<size_t> count(kDigits * kRadix, 0);
+    for (const uint64_t w : words)
+        for (int d = 0; d < kDigits; ++d)
+            ++count[d * kRadix + ((w >> (32 + d * kBits)) & (kRadix - 1))];
+    std::vector<uint64_t> sorted(n);
+    for (int d = 0; d < kDigits; ++d) {
+        size_t *digitCount = count.data() + d * kRadix;
+        if (std::find(digitCount, digitCount + kRadix, n) != digitCount + kRadix)
             continue;
-        for (int d = 0; d < 256; ++d)
-            count[d + 1] += count[d];
-        for (size_t i = 0; i < keys.size(); ++i) {
-            const size_t at = count[(keys[i] >> shift) & 0xFF]++;
-            items2[at] = items[i];
-            keys2[at] = keys[i];
-        }
-        items.swap(items2);
-        keys.swap(keys2);
+        size_t at = 0;
+        for (size_t v = 0; v < kRadix; ++v)
+            at += std::exchange(digitCount[v], at);
+        const int shift = 32 + d * kBits;
+        for (const uint64_t w : words)
+            sorted[digitCount[(w >> shift) & (kRadix - 1)]++] = w;
+        words.swap(sorted);
     }
 }
 
@@ -83,7 +88,7 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
     using FaceNormals = ChartFaceNormals;
     std::vector<FaceNormals> normals(faceCount, FaceNormals{glm::vec3(0.0f), glm::vec3(0.0f)});
     std::vector<uint8_t> degenerate(faceCount, 0);
-    std::vector<uint32_t> order, keys;
+    std::vector<uint32_t> order;
     // Faces [begin, end)'s normals; returns (non-finite faces, ignored normals).
     auto faceNormals = [&](size_t begin, size_t end) {
         std::pair<size_t, size_t> counts{0, 0};
@@ -119,8 +124,8 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
     // Seed order: largest |component| first, face order among equals. For positive floats the
     // bit pattern orders like the value, so ~bits sorts descending.
     auto seedOrder = [&] {
-        order.reserve(faceCount);
-        keys.reserve(faceCount);
+        std::vector<uint64_t> keyed;  // per face: its key above its index
+        keyed.reserve(faceCount);
         for (size_t f = 0; f < faceCount; ++f) {
             if (degenerate[f])
                 continue;
@@ -128,19 +133,21 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
             const float priority = std::max({std::abs(n.x), std::abs(n.y), std::abs(n.z)});
             uint32_t bits;
             std::memcpy(&bits, &priority, sizeof bits);
-            order.push_back(uint32_t(f));
-            keys.push_back(~bits);
+            keyed.push_back((uint64_t(~bits) << 32) | f);
         }
-        radixSortByKey(order, keys);
+        radixSortByHighWord(keyed);
+        order.resize(keyed.size());
+        for (size_t i = 0; i < keyed.size(); ++i)
+            order[i] = uint32_t(keyed[i]);
     };
     // On two threads for larger meshes: the edge adjacency (which does not depend on the normals)
-    // beside the normals and the seed order. The second thread takes the last fifth of the faces'
+    // beside the normals and the seed order. The second thread takes the last twelfth of the faces'
     // normals first (the adjacency takes longer than the sort), the first one waits for them
     // before it orders the seeds: each face's normal is computed alone, so the same as on one.
     EdgeAdjacency adjacency;
     std::pair<size_t, size_t> headCounts{0, 0}, tailCounts{0, 0};
     if (faceCount >= kLeastParallelFaces && bandThreads(options.threads, 2) == 2) {
-        const size_t split = faceCount - faceCount / 5;
+        const size_t split = faceCount - faceCount / 12;
         std::atomic<bool> tailDone{false};
         runBands(2, 2, [&](size_t band) {
             if (band == 1) {
