@@ -109,8 +109,9 @@ constexpr double kLeastFillGain = 1.04;
 // A larger model's first fill aim this close above its fallback (below) is not tried first.
 constexpr double kCloseFillAims = 1.03;
 // The share of the first texture shape a larger model's masks are first packed to fill by their
-// room (packCharts), below what the tight packer fills on any larger model seen: the synthetic
-// tank's large charts fill 0.71 of the rows they reach, the shared models 0.76 to 0.99.
+// room (packCharts), below what the tight packer fills of the rows it reaches on any larger model
+// seen: 0.71 on the synthetic tank (large charts), 0.76 on the 185k sphere, 0.90 to 0.99 on the
+// larger shared models.
 constexpr double kFirstFillShare = 0.68;
 
 // The factor on the density of `masks` (packed with the tight packer, fitting) at which the
