@@ -466,6 +466,35 @@ TEST(Charts, SectorsOverlappingAtAVertexAreAFold) {
     EXPECT_TRUE(cornersOverlap(pastTheTurn));
 }
 
+// Many corners (past the few that are insertion-sorted) at vertices whose ids differ in every
+// byte, given in shuffled order: closed fans do not fold; one sector pushed past its neighbour's
+// start at one vertex does, as does one wrapped past the full turn at another.
+TEST(Charts, SectorsOverlapAmongManyCornersInAnyOrder) {
+    const double sixth = 6.283185307179586 / 6;
+    const uint32_t vertices[] = {0, 255, 256, 70000, 16777216, 4000000000u};
+    std::vector<ChartCorner> fans;
+    for (const uint32_t v : vertices)
+        for (int k = 0; k < 6; ++k)
+            fans.push_back({v, k * sixth, sixth});
+    std::mt19937 random(14);
+    for (int round = 0; round < 20; ++round) {
+        std::shuffle(fans.begin(), fans.end(), random);
+        std::vector<ChartCorner> corners = fans;
+        EXPECT_FALSE(cornersOverlap(corners));
+        ASSERT_EQ(corners.size(), fans.size());
+        std::vector<ChartCorner> pushed = fans;
+        for (ChartCorner &c : pushed)
+            if (c.vertex == 70000 && c.from > 2 * sixth && c.from < 3.5 * sixth)
+                c.width += 0.01;  // over the next sector's start
+        EXPECT_TRUE(cornersOverlap(pushed));
+        std::vector<ChartCorner> wrapped = fans;
+        for (ChartCorner &c : wrapped)
+            if (c.vertex == 4000000000u && c.from > 4.5 * sixth)
+                c.width += 0.01;  // past the full turn into the first sector
+        EXPECT_TRUE(cornersOverlap(wrapped));
+    }
+}
+
 TEST(Charts, UnsharedCornersAreMatchedByPosition) {
     const TestMesh welded = smoothed(voxelSphere(6));
     TestMesh loose = welded;  // three vertices of its own per triangle, as in an STL file
