@@ -184,8 +184,10 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
     out.chartFaces.reserve(faceCount);
     out.wedgeUv.resize(3 * faceCount);
 
-    // Breadth-first growth from `seed`; chartFaces doubles as the queue.
+    // Breadth-first growth from `seed`: the queue, in a buffer of its own (written through a
+    // pointer, no capacity check per face), is the chart's faces in order, appended at the end.
     auto scaleOf = [&](uint32_t f) { return mesh.faceTexelScale ? mesh.faceTexelScale[f] : 1.0f; };
+    std::vector<uint32_t> growQueue(faceCount);
     auto grow = [&](uint32_t seed) {
         const uint32_t chart = uint32_t(out.chartAxis.size());
         const glm::vec3 axis = normals[seed].cone;
@@ -193,9 +195,11 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
         out.chartAxis.push_back(axis);
         out.chartFirstFace.push_back(uint32_t(out.chartFaces.size()));
         out.faceChart[seed] = chart;
-        out.chartFaces.push_back(seed);
-        for (size_t q = out.chartFirstFace.back(); q < out.chartFaces.size(); ++q) {
-            const uint32_t f = out.chartFaces[q];
+        uint32_t *queue = growQueue.data();
+        size_t queued = 0;
+        queue[queued++] = seed;
+        for (size_t q = 0; q < queued; ++q) {
+            const uint32_t f = queue[q];
             for (uint32_t h = 3 * f; h < 3 * f + 3; ++h) {
                 const uint32_t o = adjacency.opposite[h];
                 if (o == kNoOpposite || out.faceChart[o / 3] != kFree || scaleOf(o / 3) != scale)
@@ -203,10 +207,11 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
                 const FaceNormals &n = normals[o / 3];
                 if (glm::dot(axis, n.cone) >= cone && glm::dot(axis, n.geometric) >= cone) {
                     out.faceChart[o / 3] = chart;
-                    out.chartFaces.push_back(o / 3);
+                    queue[queued++] = o / 3;
                 }
             }
         }
+        out.chartFaces.insert(out.chartFaces.end(), queue, queue + queued);
         return chart;
     };
 
