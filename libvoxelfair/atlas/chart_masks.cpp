@@ -119,10 +119,16 @@ bool rasterizeBlocks(const AtlasCharts &charts, const uint8_t *shared, size_t c,
     for (size_t i = faceFirst; i < faceFirst + faces; ++i) {
         if (outlined && !outline.rim[i - faceFirst])
             continue;
-        const glm::vec2 *uv = &charts.wedgeUv[3 * i];
-        const glm::dvec2 a = (glm::dvec2(uv[0]) * m.scale + m.offset) * 0.5,
-                         b = (glm::dvec2(uv[1]) * m.scale + m.offset) * 0.5,
-                         d = (glm::dvec2(uv[2]) * m.scale + m.offset) * 0.5;
+        // In block units; an outlined chart's were computed with its outline.
+        glm::dvec2 corners[3];
+        const glm::dvec2 *p = corners;
+        if (outlined) {
+            p = &outline.corners[3 * (i - faceFirst)];
+        } else {
+            for (int k = 0; k < 3; ++k)
+                corners[k] = (glm::dvec2(charts.wedgeUv[3 * i + size_t(k)]) * m.scale + m.offset) * 0.5;
+        }
+        const glm::dvec2 a = p[0], b = p[1], d = p[2];
         const raster_detail::TexelBox box =
             raster_detail::conservativeBox(std::min({a.x, b.x, d.x}), std::max({a.x, b.x, d.x}),
                                            std::min({a.y, b.y, d.y}), std::max({a.y, b.y, d.y}), margin, width, height);

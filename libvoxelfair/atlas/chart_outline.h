@@ -43,7 +43,7 @@ struct ChartOutline {
         int32_t row = 0, winding = 0;
         double x = 0;
     };
-    std::vector<glm::dvec2> corners;  // in block units
+    std::vector<glm::dvec2> corners;  // in block units, three per triangle (rasterizeBlocks reads them)
     std::vector<Crossing> crossings;
     std::vector<uint8_t> rim;  // per triangle: 1 when it has an edge on the outline
 };
