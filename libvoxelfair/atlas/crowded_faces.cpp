@@ -4,6 +4,7 @@
 #include "atlas/seed_plane.h"
 #include "atlas/texel_raster.h"
 #include "base/parallel_bands.h"
+#include "base/radix_sort.h"
 
 #include <algorithm>
 #include <atomic>
@@ -39,10 +40,11 @@ public:
     struct Point {
         glm::dvec2 p;
         uint32_t owner;
+        uint32_t colour;  // the owner's colour, packed (in what would be padding)
     };
 
     void build(glm::dvec2 size, const std::vector<Point> &points) {
-        cell_ = std::max(2 * kReach, std::sqrt(std::max(size.x * size.y, 1.0) / double(points.size())));
+        perCell_ = 1 / std::max(2 * kReach, std::sqrt(std::max(size.x * size.y, 1.0) / double(points.size())));
         width_ = index(size.x) + 2;
         height_ = index(size.y) + 2;
         start_.assign(size_t(width_) * height_ + 1, 0);
@@ -56,7 +58,7 @@ public:
             entries_[fill_[cellOf(q.p)]++] = q;
     }
 
-    // Calls visit(owner) for every point within kReach of p until visit returns true; returns
+    // Calls visit(point) for every point within kReach of p until visit returns true; returns
     // whether it did.
     template <class Visit>
     bool anyNear(glm::dvec2 p, Visit &&visit) const {
@@ -67,7 +69,7 @@ public:
                 const size_t c = size_t(y) * width_ + size_t(x);
                 for (uint32_t e = start_[c]; e < start_[c + 1]; ++e) {
                     const glm::dvec2 d = entries_[e].p - p;
-                    if (glm::dot(d, d) < kReach * kReach && visit(entries_[e].owner))
+                    if (glm::dot(d, d) < kReach * kReach && visit(entries_[e]))
                         return true;
                 }
             }
@@ -75,13 +77,14 @@ public:
     }
 
 private:
-    // Cell column or row of a coordinate; the grid starts one cell below zero.
-    int index(double v) const { return int(std::floor(v / cell_)) + 1; }
+    // Cell column or row of a coordinate; the grid starts one cell below zero. Monotonic in v,
+    // which is all the search needs: a point within kReach of p lies in the cells of p +- kReach.
+    int index(double v) const { return int(std::floor(v * perCell_)) + 1; }
     int clampX(int x) const { return std::clamp(x, 0, width_ - 1); }
     int clampY(int y) const { return std::clamp(y, 0, height_ - 1); }
     size_t cellOf(glm::dvec2 p) const { return size_t(clampY(index(p.y))) * width_ + size_t(clampX(index(p.x))); }
 
-    double cell_ = 1;
+    double perCell_ = 1;  // cells per texel
     int width_ = 0, height_ = 0;
     std::vector<uint32_t> start_, fill_;
     std::vector<Point> entries_;
@@ -121,6 +124,7 @@ CrowdedFaces separateCrowdedFaces(const AtlasMesh &mesh, AtlasCharts &charts, co
         return out;
     const size_t entries = charts.chartFaces.size();
     auto colour = [&](size_t i) { return mesh.faceColours[charts.chartFaces[i]]; };
+    auto packed = [](glm::u8vec3 c) { return uint32_t(c.r) | uint32_t(c.g) << 8 | uint32_t(c.b) << 16; };
     auto points = [&](size_t i, glm::dvec2 p[4]) {
         glm::dvec2 q[3];
         for (int k = 0; k < 3; ++k)
@@ -136,12 +140,15 @@ CrowdedFaces separateCrowdedFaces(const AtlasMesh &mesh, AtlasCharts &charts, co
     // searched apart (on up to options.threads threads) and their counts summed in chart order, so the result is the same for any thread count; the sum
     // stops once over the budget, where the chart-by-chart search stopped.
     const double budget = options.maxSeparatedShare * double(mesh.faceCount);
-    std::vector<double> inradius(entries, 0.0);
     std::vector<uint8_t> separated(entries, 0);
     const size_t chartCount = charts.chartCount();
     std::vector<uint32_t> thinCount(chartCount, 0), crowdedCount(chartCount, 0);
+    struct Thin {
+        double inradius;
+        uint32_t entry;
+    };
     struct Scratch {
-        std::vector<uint32_t> thin;
+        std::vector<Thin> thin, sorted;
         std::vector<ChartPointGrid::Point> chartPoints;
         ChartPointGrid grid;
     };
@@ -157,30 +164,34 @@ CrowdedFaces separateCrowdedFaces(const AtlasMesh &mesh, AtlasCharts &charts, co
             mixed = colour(i) != colour(first);
         s.thin.clear();
         s.chartPoints.clear();
+        if (mixed)
+            s.chartPoints.reserve(4 * size_t(end - first));
         glm::dvec2 p[4] = {};
         for (uint32_t i = first; i < end; ++i) {
             if ((i - first) % 4096 == 4095 && unneeded(c))
                 return;
-            inradius[i] = points(i, p);
-            if (inradius[i] < kReach)
-                s.thin.push_back(i);
-            if (mixed)
+            const double inradius = points(i, p);
+            if (inradius < kReach)
+                s.thin.push_back({inradius, i});
+            if (mixed) {
+                const uint32_t own = packed(colour(i));
                 for (const glm::dvec2 &q : p)
-                    s.chartPoints.push_back({q, i});
+                    s.chartPoints.push_back({q, i, own});
+            }
         }
         thinCount[c] = uint32_t(s.thin.size());
         if (!mixed || s.thin.empty())
             return;
         s.grid.build(glm::dvec2(charts.chartSize[c]) * d, s.chartPoints);
-        std::sort(s.thin.begin(), s.thin.end(), [&](uint32_t a, uint32_t b) {
-            return inradius[a] != inradius[b] ? inradius[a] < inradius[b] : a < b;
-        });
-        for (uint32_t i : s.thin) {
+        // Thinnest first, in chart order among equals (they were noted in chart order).
+        radixSortStable(s.thin, s.sorted, [](const Thin &t) { return orderedKey(t.inradius); });
+        for (const Thin &t : s.thin) {
+            const uint32_t i = t.entry;
             const ChartPointGrid::Point *own = &s.chartPoints[4 * size_t(i - first)];
-            separated[i] = inradius[i] < kFloatThin;
+            separated[i] = t.inradius < kFloatThin;
             for (int k = 0; k < 4 && !separated[i]; ++k)
-                separated[i] = s.grid.anyNear(own[k].p, [&](uint32_t other) {
-                    return other != i && !separated[other] && colour(other) != colour(i);
+                separated[i] = s.grid.anyNear(own[k].p, [&](const ChartPointGrid::Point &other) {
+                    return other.colour != own[k].colour && other.owner != i && !separated[other.owner];
                 });
             crowdedCount[c] += separated[i];
             if (double(crowdedCount[c]) > budget) {
