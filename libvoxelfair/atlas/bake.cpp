@@ -32,6 +32,9 @@ namespace {
 // the packed masks.
 constexpr double kBakeMargin = -1.0 / 256;
 
+// Bands of rows painted on threads: two per worker (for the load balance), at most 64 workers.
+constexpr size_t kMaxBands = 128;
+
 // The image being baked: RGBA rows from the top, as AtlasTexture::rgba, and per texel whether
 // it is painted (a face's texel or a dilation ring's).
 //
@@ -326,8 +329,8 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
     auto paintOverlapped = [&](size_t f, const glm::dvec2 *q, int rowFrom, int rowTo) {
         // The conservative raster's box (raster_detail::conservativeBox), within the rows asked.
         const raster_detail::TexelBox box = raster_detail::conservativeBox(
-            std::min({q[0].x, q[1].x, q[2].x}), std::max({q[0].x, q[1].x, q[2].x}), std::min({q[0].y, q[1].y, q[2].y}),
-            std::max({q[0].y, q[1].y, q[2].y}), kBakeMargin, width, height);
+            min3(q[0].x, q[1].x, q[2].x), max3(q[0].x, q[1].x, q[2].x), min3(q[0].y, q[1].y, q[2].y),
+            max3(q[0].y, q[1].y, q[2].y), kBakeMargin, width, height);
         if (box.x0 > box.x1)
             return;
         const int y0 = std::max(rowFrom, box.y0), y1 = std::min(rowTo, box.y1);
@@ -350,65 +353,6 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
             },
             rowFrom, rowTo);
     };
-    // Every face in order; a later face's centre texels overwrite earlier faces' edge texels.
-    // Crisp bakes also note the faces too thin for the centre rule (below). Bands of rows run on
-    // their own threads, each taking every face in order on its rows only: the same texels as one
-    // pass, for any thread count.
-    const int workers = bandThreads(options.threads, size_t(height));
-    const size_t bands = workers > 1 && mesh.faceCount >= kLeastParallelFaces ? size_t(2 * workers) : 1;
-    // Band b notes the thin faces of its share of them (below), with the texel boxes to paint.
-    struct ThinFace {
-        uint32_t face;
-        uint16_t x0[4], x1[4], y0[4], y1[4];  // per interior point
-        uint16_t bottom, top;                 // the least y0, the greatest y1
-    };
-    std::vector<std::vector<ThinFace>> thinOf(bands);
-    std::vector<std::vector<uint32_t>> reachedOf(bands);
-    runBands(bands, workers, [&](size_t band) {
-        const int rowFrom = int(size_t(height) * band / bands);
-        const int rowTo = int(size_t(height) * (band + 1) / bands) - 1;
-        const size_t noteFrom = mesh.faceCount * band / bands, noteTo = mesh.faceCount * (band + 1) / bands;
-        canvas.clear(rowFrom, rowTo);  // the bands' rows cover the image
-        // A face reaches rows floor(min y - 1 - margin) to floor(max y + margin) (margin < 0).
-        auto outside = [&](const glm::dvec2 *q) {
-            return bands > 1 && (std::max({q[0].y, q[1].y, q[2].y}) < rowFrom - 1.0 ||
-                                 std::min({q[0].y, q[1].y, q[2].y}) > rowTo + 2.0);
-        };
-        glm::dvec2 q[3], points[4] = {};
-        std::vector<uint32_t> &reached = reachedOf[band];  // the faces on the band's rows
-        for (size_t f = 0; f < mesh.faceCount; ++f) {
-            load(f, q);
-            if (crisp && f >= noteFrom && f < noteTo) {
-                const double inradius = faceInteriorPoints(q, points);
-                if (inradius > 0 && inradius < std::sqrt(2.0) + 2 * kUvRounding) {
-                    ThinFace thin{uint32_t(f), {}, {}, {}, {}, uint16_t(height - 1), 0};
-                    for (int k = 0; k < 4; ++k) {
-                        const glm::dvec2 &p = points[k];
-                        thin.x0[k] = uint16_t(clampToInt(p.x - kUvRounding, 0, width - 1));
-                        thin.x1[k] = uint16_t(clampToInt(p.x + kUvRounding, 0, width - 1));
-                        thin.y0[k] = uint16_t(clampToInt(p.y - kUvRounding, 0, height - 1));
-                        thin.y1[k] = uint16_t(clampToInt(p.y + kUvRounding, 0, height - 1));
-                        thin.bottom = std::min(thin.bottom, thin.y0[k]);
-                        thin.top = std::max(thin.top, thin.y1[k]);
-                    }
-                    thinOf[band].push_back(thin);
-                }
-            }
-            if (outside(q))
-                continue;
-            if (!uniform) {
-                paintFace(f, q, rowFrom, rowTo);
-                continue;
-            }
-            paintCentres(f, q, rowFrom, rowTo);
-            reached.push_back(uint32_t(f));
-        }
-        for (uint32_t f : reached) {
-            load(f, q);
-            paintOverlapped(f, q, rowFrom, rowTo);
-        }
-        reached = {};
-    });
     // Faces too thin for the centre rule to guarantee their interior (UV inradius under sqrt(2)
     // texels: a texel holding one of their interior points may have its centre in a neighbour)
     // paint the texels under their interior points with their own colour, and the texels
@@ -417,29 +361,123 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
     // kUvRounding are untouched: the texels within kUvRounding of their interior points have
     // their centres inside the face. Where two thin faces of different colours would share such
     // a texel, the atlas gave one of them a chart of its own beforehand (crowded_faces.h: points
-    // closer than sqrt(2) + 0.01 texels), so the order does not matter.
-    // The texel boxes of their interior points were found beside the bake (bands in face order).
-    // Painted in that order by the same bands of rows, each on its own rows: a texel under two
-    // thin faces (over the separation budget) takes the later one's colour, as in one pass.
-    runBands(bands, workers, [&](size_t band) {
-        const int rowFrom = int(size_t(height) * band / bands);
-        const int rowTo = int(size_t(height) * (band + 1) / bands) - 1;
-        for (const std::vector<ThinFace> &faces : thinOf)
-            for (const ThinFace &thin : faces) {
-                if (thin.top < rowFrom || thin.bottom > rowTo)
-                    continue;  // none of its rows in this band
-                const glm::u8vec3 colour = mesh.faceColours[thin.face];
-                for (int k = 0; k < 4; ++k) {
-                    const int y0 = std::max<int>(thin.y0[k], rowFrom), y1 = std::min<int>(thin.y1[k], rowTo);
-                    if (y0 == y1 && thin.x0[k] == thin.x1[k]) {  // most points: one texel
-                        canvas.paint(canvas.index(thin.x0[k], y0), colour);
-                        continue;
-                    }
-                    for (int y = y0; y <= y1; ++y)
-                        for (int x = thin.x0[k]; x <= thin.x1[k]; ++x)
-                            canvas.paint(canvas.index(x, y), colour);
+    // closer than sqrt(2) + 0.01 texels), so the order does not matter; it is the faces' order
+    // anyway (a texel under two thin faces, over the separation budget, takes the later one's
+    // colour). Only rows rowFrom..rowTo; points off the texture paint its nearest texels.
+    auto paintThin = [&](size_t f, const glm::dvec2 *q, int rowFrom, int rowTo) {
+        glm::dvec2 points[4] = {};
+        const double inradius = faceInteriorPoints(q, points);
+        if (!(inradius > 0 && inradius < std::sqrt(2.0) + 2 * kUvRounding))
+            return;
+        const glm::u8vec3 c = mesh.faceColours[f];
+        const uint8_t texel[4] = {c.r, c.g, c.b, 255};
+        auto paintBox = [&](int x0, int x1, int y0, int y1) {
+            for (int y = std::max(rowFrom, y0); y <= std::min(rowTo, y1); ++y)
+                for (int x = x0; x <= x1; ++x) {
+                    const size_t i = canvas.index(x, y);
+                    std::memcpy(rgba + 4 * i, texel, 4);
+                    filled[i] = 1;
                 }
+        };
+        // The points lie in the corners' box: when it is well inside (-1, width) x (-1, height),
+        // clamping onto the texture changes no texel and the texels are the truncations.
+        if (min3(q[0].x, q[1].x, q[2].x) > -0.5 && max3(q[0].x, q[1].x, q[2].x) < width - 0.5 &&
+            min3(q[0].y, q[1].y, q[2].y) > -0.5 && max3(q[0].y, q[1].y, q[2].y) < height - 0.5) {
+            for (const glm::dvec2 &p : points) {
+                const int x0 = int(p.x - kUvRounding), x1 = int(p.x + kUvRounding);
+                const int y0 = int(p.y - kUvRounding), y1 = int(p.y + kUvRounding);
+                if (((x0 ^ x1) | (y0 ^ y1)) == 0) {  // most points: one texel
+                    if (y0 >= rowFrom && y0 <= rowTo) {
+                        const size_t i = canvas.index(x0, y0);
+                        std::memcpy(rgba + 4 * i, texel, 4);
+                        filled[i] = 1;
+                    }
+                    continue;
+                }
+                paintBox(x0, x1, y0, y1);
             }
+            return;
+        }
+        for (const glm::dvec2 &p : points)
+            paintBox(clampToInt(p.x - kUvRounding, 0, width - 1), clampToInt(p.x + kUvRounding, 0, width - 1),
+                     clampToInt(p.y - kUvRounding, 0, height - 1), clampToInt(p.y + kUvRounding, 0, height - 1));
+    };
+    // Every face in order; a later face's centre texels overwrite earlier faces' edge texels.
+    // Bands of rows run on their own threads, each taking every face in order on its rows only:
+    // the same texels as one pass, for any thread count.
+    // One colour per face: the centres first (every face), then the overlapped texels and, for
+    // crisp bakes, the thin faces, face by face in one pass: both come after every centre, the
+    // overlaps only fill empty texels and the thin faces paint over anything, so a texel ends
+    // with the last thin face's colour where one holds it, else with the first overlapping
+    // face's, as when the thin faces come after all the overlaps.
+    const int workers = bandThreads(options.threads, size_t(height));
+    const size_t bands = workers > 1 && mesh.faceCount >= kLeastParallelFaces ? size_t(2 * workers) : 1;
+    auto rowsOf = [&](size_t band, int &rowFrom, int &rowTo) {
+        rowFrom = int(size_t(height) * band / bands);
+        rowTo = int(size_t(height) * (band + 1) / bands) - 1;
+    };
+    // The faces each band takes: a face reaches rows floor(min y - 1 - margin) to floor(max y +
+    // margin) (margin < 0), its thin-face points rows floor(min y - kUvRounding) to floor(max y +
+    // kUvRounding), clamped onto the texture (the first and last bands take the faces beyond
+    // it). Sorted once, in shares of the faces (one per worker) each listing its faces band by
+    // band in order, so that a band reads its faces in order without looking at the others.
+    const size_t shares = bands > 1 ? size_t(workers) : 0;
+    std::vector<std::vector<uint32_t>> facesOf(shares * bands);  // share * bands + band
+    runBands(shares, workers, [&](size_t share) {
+        int rowFrom[kMaxBands], rowTo[kMaxBands];
+        for (size_t band = 0; band < bands; ++band)
+            rowsOf(band, rowFrom[band], rowTo[band]);
+        const size_t from = mesh.faceCount * share / shares, to = mesh.faceCount * (share + 1) / shares;
+        for (size_t band = 0; band < bands; ++band)
+            facesOf[share * bands + band].reserve((to - from) / bands * 5 / 4 + 16);
+        const double h = height;
+        for (size_t f = from; f < to; ++f) {
+            const glm::vec2 *uv = &layout.wedgeUv[3 * f];
+            const double y0 = double(uv[0].y) * h, y1 = double(uv[1].y) * h, y2 = double(uv[2].y) * h;
+            const double minY = min3(y0, y1, y2), maxY = max3(y0, y1, y2);
+            for (size_t band = 0; band < bands; ++band)
+                if (!(rowFrom[band] > 0 && maxY < rowFrom[band] - 1.0) &&
+                    !(rowTo[band] < height - 1 && minY > rowTo[band] + 2.0))
+                    facesOf[share * bands + band].push_back(uint32_t(f));
+        }
+    });
+    // Every face in order; a later face's centre texels overwrite earlier faces' edge texels.
+    // Bands of rows run on their own threads, each taking every face in order on its rows only:
+    // the same texels as one pass, for any thread count.
+    // One colour per face: the centres first (every face), then the overlapped texels and, for
+    // crisp bakes, the thin faces, face by face in one pass: both come after every centre, the
+    // overlaps only fill empty texels and the thin faces paint over anything, so a texel ends
+    // with the last thin face's colour where one holds it, else with the first overlapping
+    // face's, as when the thin faces come after all the overlaps.
+    runBands(bands, workers, [&](size_t band) {
+        int rowFrom, rowTo;
+        rowsOf(band, rowFrom, rowTo);
+        canvas.clear(rowFrom, rowTo);  // the bands' rows cover the image
+        auto eachFace = [&](auto &&visit) {
+            if (bands == 1) {
+                for (size_t f = 0; f < mesh.faceCount; ++f)
+                    visit(f);
+                return;
+            }
+            for (size_t share = 0; share < shares; ++share)
+                for (const uint32_t f : facesOf[share * bands + band])
+                    visit(size_t(f));
+        };
+        glm::dvec2 q[3];
+        eachFace([&](size_t f) {
+            load(f, q);
+            if (uniform)
+                paintCentres(f, q, rowFrom, rowTo);
+            else
+                paintFace(f, q, rowFrom, rowTo);
+        });
+        if (uniform)
+            eachFace([&](size_t f) {
+                load(f, q);
+                paintOverlapped(f, q, rowFrom, rowTo);
+                if (crisp)
+                    paintThin(f, q, rowFrom, rowTo);
+            });
     });
     out.dilation = options.dilation < 0 ? layout.gutter / 2 : std::min(options.dilation, width);
     dilate(canvas, out.dilation, bands > 1 ? workers : 1);

@@ -47,6 +47,20 @@ inline double faceInteriorPoints(const glm::dvec2 q[3], glm::dvec2 points[4]) {
 // v clamped onto [lo, hi], then truncated (its floor there when lo >= 0).
 inline int clampToInt(double v, int lo, int hi) { return int(std::clamp(v, double(lo), double(hi))); }
 
+// std::min({a, b, c}) and std::max({a, b, c}), the same value in every case (NaN included: a
+// later value replaces the kept one only when it compares less, or greater), without the
+// initializer list's loop.
+inline double min3(double a, double b, double c) {
+    double m = a;
+    m = b < m ? b : m;
+    return c < m ? c : m;
+}
+inline double max3(double a, double b, double c) {
+    double m = a;
+    m = m < b ? b : m;
+    return m < c ? c : m;
+}
+
 // floor and ceil of a float or double v with |v| < 2^31: truncation, then one step (exact: a
 // float or double too large to have a fraction is a whole number, so the step is 0 there).
 template <class Real>
@@ -85,10 +99,10 @@ inline bool setup(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, Setup &s) {
         const glm::dvec2 &p0 = p[i], &p1 = p[(i + 1) % 3];
         s.e[i] = {p0.x, p0.y, p1.x - p0.x, p1.y - p0.y};
     }
-    s.minX = std::min({a.x, b.x, c.x});
-    s.maxX = std::max({a.x, b.x, c.x});
-    s.minY = std::min({a.y, b.y, c.y});
-    s.maxY = std::max({a.y, b.y, c.y});
+    s.minX = min3(a.x, b.x, c.x);
+    s.maxX = max3(a.x, b.x, c.x);
+    s.minY = min3(a.y, b.y, c.y);
+    s.maxY = max3(a.y, b.y, c.y);
     return true;
 }
 // A triangle's rows solved in closed form for one test (edge i's inequality at(x, y) + reach[i]
