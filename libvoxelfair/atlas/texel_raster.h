@@ -213,15 +213,23 @@ void spans(const Setup &s, const double reach[3], int x0, int x1, int y0, int y1
 struct TexelBox {
     int x0, x1, y0, y1;
 };
+constexpr double kSafe = 1 << 30;  // boxes within this of the origin take the integer floors
 inline TexelBox conservativeBox(double minX, double maxX, double minY, double maxY, double margin, int width,
                                 int height) {
-    constexpr double kSafe = 1 << 30;
     if (minX > -kSafe && maxX < kSafe && minY > -kSafe && maxY < kSafe)
         return {
             std::clamp(ceilToInt(minX - 1 - margin), 0, width), std::clamp(floorToInt(maxX + margin), -1, width - 1),
             std::clamp(ceilToInt(minY - 1 - margin), 0, height), std::clamp(floorToInt(maxY + margin), -1, height - 1)};
     return {clampToInt(std::ceil(minX - 1 - margin), 0, width), clampToInt(std::floor(maxX + margin), -1, width - 1),
             clampToInt(std::ceil(minY - 1 - margin), 0, height), clampToInt(std::floor(maxY + margin), -1, height - 1)};
+}
+// The texels whose centre can lie in a triangle with this bounding box: the centre test's range.
+inline TexelBox centreBox(double minX, double maxX, double minY, double maxY, int width, int height) {
+    if (minX > -kSafe && maxX < kSafe && minY > -kSafe && maxY < kSafe)
+        return {std::clamp(ceilToInt(minX - 0.5), 0, width), std::clamp(floorToInt(maxX - 0.5), -1, width - 1),
+                std::clamp(ceilToInt(minY - 0.5), 0, height), std::clamp(floorToInt(maxY - 0.5), -1, height - 1)};
+    return {clampToInt(std::ceil(minX - 0.5), 0, width), clampToInt(std::floor(maxX - 0.5), -1, width - 1),
+            clampToInt(std::ceil(minY - 0.5), 0, height), clampToInt(std::floor(maxY - 0.5), -1, height - 1)};
 }
 
 // The conservative test (texel square grown by `margin` meets the triangle, by three
@@ -248,10 +256,8 @@ struct CentreTest {
     bool tl[3];
     int x0, x1, y0, y1;
     CentreTest(const Setup &setup, int width, int height) : s(setup) {
-        x0 = clampToInt(std::ceil(s.minX - 0.5), 0, width);
-        x1 = clampToInt(std::floor(s.maxX - 0.5), -1, width - 1);
-        y0 = clampToInt(std::ceil(s.minY - 0.5), 0, height);
-        y1 = clampToInt(std::floor(s.maxY - 0.5), -1, height - 1);
+        const TexelBox box = centreBox(s.minX, s.maxX, s.minY, s.maxY, width, height);
+        x0 = box.x0, x1 = box.x1, y0 = box.y0, y1 = box.y1;
         for (int i = 0; i < 3; ++i)
             tl[i] = s.e[i].topLeft();
     }
