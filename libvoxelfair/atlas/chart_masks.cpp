@@ -77,18 +77,27 @@ struct SpanRecorder {
 // the box whose blocks are all set already would add nothing, so only the rows from the first
 // to the last row with an unset block are rasterised (the same spans there: rowFrom, rowTo),
 // none when every row is set. The extents are then read off the bitmap.
-bool rasterizeBlocks(const AtlasCharts &charts, const uint8_t *shared, size_t c, double origin, int w, int h,
+bool rasterizeBlocks(const AtlasCharts &charts, const ChartOutlineBasis *basis, size_t c, double origin, int w, int h,
                      int padding, int maxSide, ChartMask &m, MaskPart &part) {
+    // The box of the triangles with area, at uv * scale + origin. The offsets below stay within
+    // `reach` of zero (the box lies in the w x h canvas).
+    auto map = [&](glm::vec2 uv) { return glm::dvec2(uv) * m.scale + origin; };
+    const double reach = origin + padding + std::max(w, h);
     double lx = INFINITY, hx = -INFINITY, ly = INFINITY, hy = -INFINITY;
-    for (size_t i = charts.chartFirstFace[c]; i < charts.chartFirstFace[c + 1]; ++i) {
-        const glm::vec2 *uv = &charts.wedgeUv[3 * i];
-        const glm::dvec2 a = glm::dvec2(uv[0]) * m.scale + origin, b = glm::dvec2(uv[1]) * m.scale + origin,
-                         d = glm::dvec2(uv[2]) * m.scale + origin;
-        const double area = doubleArea(a, b, d);
-        if (!(area != 0) || !std::isfinite(area))
-            continue;  // not rasterised (texel_raster.h)
-        lx = std::min({lx, a.x, b.x, d.x}), hx = std::max({hx, a.x, b.x, d.x});
-        ly = std::min({ly, a.y, b.y, d.y}), hy = std::max({hy, a.y, b.y, d.y});
+    if (basis != nullptr && basis->certainlyTurnsLeft(c, m.scale, reach)) {
+        // Every triangle has area: the box of all corners, the mapped UV box (map is monotonic).
+        const glm::dvec2 lo = map(basis->lo[c]), hi = map(basis->hi[c]);
+        lx = lo.x, ly = lo.y, hx = hi.x, hy = hi.y;
+    } else {
+        for (size_t i = charts.chartFirstFace[c]; i < charts.chartFirstFace[c + 1]; ++i) {
+            const glm::vec2 *uv = &charts.wedgeUv[3 * i];
+            const glm::dvec2 a = map(uv[0]), b = map(uv[1]), d = map(uv[2]);
+            const double area = doubleArea(a, b, d);
+            if (!(area != 0) || !std::isfinite(area))
+                continue;  // not rasterised (texel_raster.h)
+            lx = std::min({lx, a.x, b.x, d.x}), hx = std::max({hx, a.x, b.x, d.x});
+            ly = std::min({ly, a.y, b.y, d.y}), hy = std::max({hy, a.y, b.y, d.y});
+        }
     }
     int bx0 = padding + 1, bx1 = bx0, by0 = bx0, by1 = bx0;  // nothing with area: keep one texel
     if (lx <= hx) {
@@ -113,17 +122,17 @@ bool rasterizeBlocks(const AtlasCharts &charts, const uint8_t *shared, size_t c,
     // outline, then only its rim triangles rasterised (chart_outline.h).
     const size_t faceFirst = charts.chartFirstFace[c], faces = charts.chartFirstFace[c + 1] - faceFirst;
     ChartOutline &outline = part.outline;
-    const bool outlined = shared != nullptr && faces >= kLeastOutlinedFaces &&
-                          chartOutline(charts, c, shared, m.scale, m.offset, height, outline);
+    const bool outlined = basis != nullptr && faces >= kLeastOutlinedFaces &&
+                          chartOutline(charts, c, *basis, m.scale, m.offset, reach, height, outline);
     bool any = outlined && fillInsideOutline(outline, width, height, bits);
-    for (size_t i = faceFirst; i < faceFirst + faces; ++i) {
-        if (outlined && !outline.rim[i - faceFirst])
-            continue;
-        // In block units; an outlined chart's were computed with its outline.
+    const size_t rasterised = outlined ? outline.rim.size() : faces;
+    for (size_t r = 0; r < rasterised; ++r) {
+        // In block units; an outlined chart's rim triangles' were computed with its outline.
+        const size_t i = faceFirst + (outlined ? outline.rim[r] : r);
         glm::dvec2 corners[3];
         const glm::dvec2 *p = corners;
         if (outlined) {
-            p = &outline.corners[3 * (i - faceFirst)];
+            p = &outline.corners[3 * r];
         } else {
             for (int k = 0; k < 3; ++k)
                 corners[k] = (glm::dvec2(charts.wedgeUv[3 * i + size_t(k)]) * m.scale + m.offset) * 0.5;
@@ -214,8 +223,8 @@ bool rasterizeBlocks(const AtlasCharts &charts, const uint8_t *shared, size_t c,
 
 // Charts [first, end) into `part` (profiles and bitmaps counted from its own start) and
 // masks[first, end): false as soon as one is too large.
-bool rasterizeRange(const AtlasCharts &charts, const uint8_t *shared, size_t first, size_t end, double texelsPerUnit,
-                    int padding, int maxSide, bool onBlocks, ChartMask *masks, MaskPart &part) {
+bool rasterizeRange(const AtlasCharts &charts, const ChartOutlineBasis *basis, size_t first, size_t end,
+                    double texelsPerUnit, int padding, int maxSide, bool onBlocks, ChartMask *masks, MaskPart &part) {
     // The footprint's extent per row (leftmost, rightmost column) and per column (lowest,
     // highest row) in the chart's canvas; kNone where nothing is set. Only these extents reach
     // the packers, so the footprint itself is never stored: the square dilation by `padding`
@@ -234,7 +243,7 @@ bool rasterizeRange(const AtlasCharts &charts, const uint8_t *shared, size_t fir
             return false;
         const int w = int(std::ceil(size.x)) + 2 * border + 1, h = int(std::ceil(size.y)) + 2 * border + 1;
         if (onBlocks) {
-            if (!rasterizeBlocks(charts, shared, c, origin, w, h, padding, maxSide, m, part))
+            if (!rasterizeBlocks(charts, basis, c, origin, w, h, padding, maxSide, m, part))
                 return false;
             continue;
         }
@@ -300,7 +309,7 @@ bool rasterizeRange(const AtlasCharts &charts, const uint8_t *shared, size_t fir
 }  // namespace
 
 bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int padding, int maxSide, ChartMasks &masks,
-                         int threads, bool onBlocks, const std::vector<uint8_t> *sharedEdges) {
+                         int threads, bool onBlocks, const ChartOutlineBasis *outlines) {
     masks.bits.clear();
     masks.bitsFirst.clear();
     masks.setBlocks.clear();
@@ -315,11 +324,11 @@ bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int pa
     const size_t bands = runs.count();
     const std::vector<size_t> &from = runs.from;
     std::vector<MaskPart> parts(bands);
-    const uint8_t *shared =
-        onBlocks && sharedEdges != nullptr && sharedEdges->size() == charts.faceCount() ? sharedEdges->data() : nullptr;
+    const ChartOutlineBasis *basis =
+        onBlocks && outlines != nullptr && outlines->shared.size() == charts.faceCount() ? outlines : nullptr;
     std::vector<uint8_t> fits(bands, 0);
     runBands(bands, workers, [&](size_t b) {
-        fits[b] = rasterizeRange(charts, shared, from[b], from[b + 1], texelsPerUnit, padding, maxSide, onBlocks,
+        fits[b] = rasterizeRange(charts, basis, from[b], from[b + 1], texelsPerUnit, padding, maxSide, onBlocks,
                                  masks.charts.data(), parts[b]);
     });
     for (size_t b = 0; b < bands; ++b) {

@@ -20,6 +20,8 @@
 
 namespace voxelfair {
 
+struct ChartOutlineBasis;  // chart_outline.h
+
 struct ChartMask {
     int width = 0, height = 0;
     // Texel coordinates of the chart inside its mask: wedgeUv * scale + offset, where scale is
@@ -67,11 +69,11 @@ struct ChartPlacement {
 // one more), so masks placed without overlap at even texels share no block. Sizes, profiles,
 // bitmaps and totalRowTexels are then in blocks; scale and offset still map chart points to the
 // texel mask's texels, whose size is twice the block mask's (rounded up to even).
-// sharedEdges (chart_outline.h's chartSharedEdges of these charts), on blocks: each chart's
+// outlines (chart_outline.h's chartOutlineBasis of these charts), on blocks: each chart's
 // inside filled from its outline and only its rim triangles rasterised (the same blocks, see
 // there); without it every triangle is rasterised.
 bool rasterizeChartMasks(const AtlasCharts &charts, double texelsPerUnit, int padding, int maxSide, ChartMasks &masks,
-                         int threads = 0, bool onBlocks = false, const std::vector<uint8_t> *sharedEdges = nullptr);
+                         int threads = 0, bool onBlocks = false, const ChartOutlineBasis *outlines = nullptr);
 
 // The mask-local texel position of chart point `p` (scaled and offset already) after `quarterTurns`
 // counter-clockwise turns of the width x height mask; integer texels map to integer texels.

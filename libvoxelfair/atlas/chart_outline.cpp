@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
+#include <utility>
 
 namespace voxelfair {
 namespace {
@@ -37,62 +39,104 @@ void addCrossings(glm::dvec2 p, glm::dvec2 q, int height, std::vector<ChartOutli
 
 }  // namespace
 
-std::vector<uint8_t> chartSharedEdges(const AtlasCharts &charts, int threads) {
-    std::vector<uint8_t> shared;
+ChartOutlineBasis chartOutlineBasis(const AtlasCharts &charts, int threads) {
+    ChartOutlineBasis basis;
     if (charts.faceOpposite.size() != 3 * charts.faceCount() || charts.chartFaces.size() != charts.faceCount())
-        return shared;
-    const size_t faces = charts.faceCount();
-    std::vector<uint32_t> position(faces);  // each face's index in chartFaces
-    for (size_t i = 0; i < faces; ++i)
-        position[charts.chartFaces[i]] = uint32_t(i);
-    shared.assign(faces, 0);
+        return basis;
+    const size_t faces = charts.faceCount(), chartCount = charts.chartCount();
+    // Each face's index in chartFaces (a permutation: the bands write apart); an opposite face
+    // is in the chart when its index is in the chart's range (no chart of its own to look up).
+    std::vector<uint32_t> position(faces);
+    basis.shared.resize(faces);
+    basis.lo.resize(chartCount);
+    basis.hi.resize(chartCount);
+    basis.leastArea.resize(chartCount);
+    basis.longestSide.resize(chartCount);
     const glm::vec2 *uv = charts.wedgeUv.data();
-    const int workers = faces >= kLeastParallelFaces ? bandThreads(threads, faces) : 1;
-    const size_t bands = size_t(workers);
-    runBands(bands, workers, [&](size_t band) {
-        for (size_t i = faces * band / bands; i < faces * (band + 1) / bands; ++i) {
-            const uint32_t f = charts.chartFaces[i];
-            uint8_t bits = 0;
-            for (int k = 0; k < 3; ++k) {
-                const uint32_t o = charts.faceOpposite[3 * size_t(f) + size_t(k)];
-                if (o == kNoOpposite || charts.faceChart[o / 3] != charts.faceChart[f])
-                    continue;
-                const size_t j = position[o / 3];
-                const uint32_t m = o % 3;
-                if (sameBits(uv[3 * i + size_t(k)], uv[3 * j + (m + 1) % 3]) &&
-                    sameBits(uv[3 * i + size_t(k + 1) % 3], uv[3 * j + m]))
-                    bits = uint8_t(bits | 1 << k);
+    const ChartRuns runs = chartRuns(charts, threads);
+    runBands(runs.count(), runs.workers, [&](size_t run) {
+        for (size_t i = charts.chartFirstFace[runs.from[run]]; i < charts.chartFirstFace[runs.from[run + 1]]; ++i)
+            position[charts.chartFaces[i]] = uint32_t(i);
+    });
+    runBands(runs.count(), runs.workers, [&](size_t run) {
+        for (size_t c = runs.from[run]; c < runs.from[run + 1]; ++c) {
+            const size_t first = charts.chartFirstFace[c], end = charts.chartFirstFace[c + 1];
+            glm::vec2 lo(INFINITY), hi(-INFINITY);
+            double least = INFINITY, longest = 0;
+            bool finite = true;
+            for (size_t i = first; i < end; ++i) {
+                const glm::vec2 *w = &uv[3 * i];
+                const uint32_t *opposite = &charts.faceOpposite[3 * size_t(charts.chartFaces[i])];
+                uint8_t bits = 0;
+                lo = glm::min(lo, glm::min(w[0], glm::min(w[1], w[2])));
+                hi = glm::max(hi, glm::max(w[0], glm::max(w[1], w[2])));
+                const glm::dvec2 a = glm::dvec2(w[1]) - glm::dvec2(w[0]), b = glm::dvec2(w[2]) - glm::dvec2(w[0]);
+                const glm::dvec2 spans = glm::max(glm::abs(a), glm::max(glm::abs(b), glm::abs(b - a)));
+                longest = std::max({longest, spans.x, spans.y});
+                const double area = a.x * b.y - a.y * b.x;  // doubleArea of the UVs
+                finite = finite && std::isfinite(area);
+                least = std::min(least, area);
+                for (int k = 0; k < 3; ++k) {
+                    if (opposite[k] == kNoOpposite)
+                        continue;
+                    const size_t j = position[opposite[k] / 3];
+                    const uint32_t m = opposite[k] % 3;
+                    if (j >= first && j < end && sameBits(w[k], uv[3 * j + (m + 1) % 3]) &&
+                        sameBits(w[(k + 1) % 3], uv[3 * j + m]))
+                        bits = uint8_t(bits | 1 << k);
+                }
+                basis.shared[i] = bits;
             }
-            shared[i] = bits;
+            basis.lo[c] = lo, basis.hi[c] = hi;
+            basis.leastArea[c] = finite && std::isfinite(longest) ? least : NAN;
+            basis.longestSide[c] = longest;
         }
     });
-    return shared;
+    return basis;
 }
 
-bool chartOutline(const AtlasCharts &charts, size_t c, const uint8_t *shared, double scale, glm::dvec2 offset,
-                  int height, ChartOutline &out) {
+bool ChartOutlineBasis::certainlyTurnsLeft(size_t c, double scale, double reach) const {
+    // Coordinates q = uv * scale + offset, at most M in size, come out within eps M of exact
+    // (two roundings of half an epsilon); a side within l of its exact length; the area, exactly
+    // scale^2 times the UV area (itself within 3 eps L^2 of leastArea), within about
+    // 8 eps M l + 6 eps l^2 of its exact value. Certain when scale^2 leastArea exceeds 8 times all of it.
+    constexpr double eps = std::numeric_limits<double>::epsilon();
+    const double a = leastArea[c], side = longestSide[c];
+    const double size = std::max({std::abs(lo[c].x), std::abs(lo[c].y), std::abs(hi[c].x), std::abs(hi[c].y)});
+    const double m = scale * size + reach, l = scale * side + 8 * eps * m;
+    return a > 0 && std::isfinite(m) && scale > 0 &&
+           scale * scale * a > 64 * eps * (scale * scale * side * side + m * l + l * l);
+}
+
+bool chartOutline(const AtlasCharts &charts, size_t c, const ChartOutlineBasis &basis, double scale, glm::dvec2 offset,
+                  double reach, int height, ChartOutline &out) {
     const size_t first = charts.chartFirstFace[c], count = charts.chartFirstFace[c + 1] - first;
     const glm::vec2 *uv = &charts.wedgeUv[3 * first];
+    const uint8_t *shared = &basis.shared[first];
     out.crossings.clear();
-    out.corners.resize(3 * count);
-    out.rim.assign(count, 0);
+    out.rim.clear();
+    out.corners.clear();
+    // Uncertain charts have every triangle mapped and tested; certain ones only their rim's.
+    const bool certain = basis.certainlyTurnsLeft(c, scale, reach);
     for (size_t t = 0; t < count; ++t) {
-        glm::dvec2 *p = &out.corners[3 * t];
+        const uint8_t inner = shared[t];
+        if (inner == 7 && certain)
+            continue;
+        glm::dvec2 p[3];
         for (int k = 0; k < 3; ++k)  // as rasterizeBlocks computes them, bit for bit
             p[k] = (glm::dvec2(uv[3 * t + size_t(k)]) * scale + offset) * 0.5;
-        const double area = doubleArea(p[0], p[1], p[2]);
-        if (!(area > 0) || !std::isfinite(area))
-            return false;  // clockwise, or not rasterised (raster_detail::setup)
-    }
-    for (size_t t = 0; t < count; ++t) {
-        const uint8_t inner = shared[first + t];
-        if (inner == 7)
-            continue;
-        out.rim[t] = 1;
+        if (!certain) {
+            const double area = doubleArea(p[0], p[1], p[2]);
+            if (!(area > 0) || !std::isfinite(area))
+                return false;  // clockwise, or not rasterised (raster_detail::setup)
+            if (inner == 7)
+                continue;
+        }
+        out.rim.push_back(uint32_t(t));
+        out.corners.insert(out.corners.end(), p, p + 3);
         for (int k = 0; k < 3; ++k)
             if (!(inner >> k & 1))
-                addCrossings(out.corners[3 * t + size_t(k)], out.corners[3 * t + size_t(k + 1) % 3], height,
-                             out.crossings);
+                addCrossings(p[k], p[(k + 1) % 3], height, out.crossings);
     }
     std::sort(out.crossings.begin(), out.crossings.end(),
               [](const ChartOutline::Crossing &a, const ChartOutline::Crossing &b) {

@@ -19,7 +19,8 @@
 // units (the rasteriser leaves them out) would make their neighbours' shared edges outline: a chart
 // with such a triangle, or with a clockwise one, has no outline here, and all its triangles are
 // rasterised. Which edges are shared does not depend on the density: found once per packing
-// (chartInsides), the outline per density costs a pass over the chart's corners.
+// (chartOutlineBasis), with what certifies a chart's triangles counter-clockwise at a density
+// from its least UV area, so the outline per density costs a pass over its rim triangles only.
 //
 // The blocks are those of rasterising every triangle except one kind: the three half-plane tests
 // of the conservative test also keep a few blocks near a sharp corner of a triangle that its
@@ -43,23 +44,43 @@ struct ChartOutline {
         int32_t row = 0, winding = 0;
         double x = 0;
     };
-    std::vector<glm::dvec2> corners;  // in block units, three per triangle (rasterizeBlocks reads them)
+    std::vector<uint32_t> rim;        // the rim triangles (indices from the chart's first), in order
+    std::vector<glm::dvec2> corners;  // theirs in block units, three per rim triangle (rasterizeBlocks reads them)
     std::vector<Crossing> crossings;
-    std::vector<uint8_t> rim;  // per triangle: 1 when it has an edge on the outline
 };
 
-// Per triangle of charts.chartFaces, bit k set when its edge k (corner k to k + 1) is shared the
-// other way with a triangle of its chart at the same two UV corners, bit for bit. Empty when the
-// charts have no faceOpposite. On up to `threads` threads (0: one per hardware thread).
-std::vector<uint8_t> chartSharedEdges(const AtlasCharts &charts, int threads = 0);
+// What the outlines need that does not depend on the density, measured once per packing.
+struct ChartOutlineBasis {
+    // Per triangle of charts.chartFaces, bit k set when its edge k (corner k to k + 1) is shared
+    // the other way with a triangle of its chart at the same two UV corners, bit for bit.
+    std::vector<uint8_t> shared;
+    // Per chart: the box of its UV corners; the least double area of its triangles in UV (NaN
+    // when a corner is not finite); the longest coordinate difference within one of them.
+    std::vector<glm::vec2> lo, hi;
+    std::vector<double> leastArea, longestSide;
 
-// The outline of chart c, in the block units b = (uv * scale + offset) * 0.5 of rasterizeBlocks:
-// out.rim marks the triangles to rasterise (indices from the chart's first) and out.crossings
-// are the outline's crossings of the rows of block centres 0..height - 1. `shared` is
-// chartSharedEdges(charts). False, and nothing usable in `out`, when a triangle of the chart runs
-// clockwise or has no area in block units.
-bool chartOutline(const AtlasCharts &charts, size_t c, const uint8_t *shared, double scale, glm::dvec2 offset,
-                  int height, ChartOutline &out);
+    bool empty() const { return shared.empty(); }
+    // Whether every triangle of chart c, its corners mapped to uv * scale + offset in double
+    // arithmetic (each offset component at most `reach` in size; a final halving changes nothing),
+    // certainly comes out counter-clockwise with a positive, finite area: a rounding error bound
+    // (each mapped coordinate off by under 2 epsilon of its size, areas by the products of those
+    // with the sides) with a margin of 8 over it. Then its mapped box is the mapped corners of
+    // its UV box (the mapping only rounds monotonically), and no triangle needs testing.
+    bool certainlyTurnsLeft(size_t c, double scale, double reach) const;
+};
+
+// The basis of the charts' outlines. Empty (no outlines) when the charts have no faceOpposite.
+// On up to `threads` threads (0: one per hardware thread).
+ChartOutlineBasis chartOutlineBasis(const AtlasCharts &charts, int threads = 0);
+
+// The outline of chart c, in the block units b = (uv * scale + offset) * 0.5 of rasterizeBlocks
+// (|offset| components at most `reach`): out.rim lists the triangles to rasterise, with their
+// corners, and out.crossings are the outline's crossings of the rows of block centres
+// 0..height - 1. False, and nothing usable in `out`, when a triangle of the chart runs clockwise
+// or has no area in block units; only a chart the basis cannot certify (certainlyTurnsLeft) has
+// all its triangles mapped and tested.
+bool chartOutline(const AtlasCharts &charts, size_t c, const ChartOutlineBasis &basis, double scale, glm::dvec2 offset,
+                  double reach, int height, ChartOutline &out);
 
 // Sets the blocks of the width x height bitmap (rows from the bottom) whose centre lies inside
 // the outline chartOutline found (a centre on it either way: its rim triangle sets that block).

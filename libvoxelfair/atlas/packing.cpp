@@ -30,8 +30,8 @@ constexpr int64_t kLeastBitmapBlocks = 16;
 // in texels either way.
 struct Packing {
     int block = 1;
-    // With blocks: the charts' shared edges (chart_outline.h), measured once per packCharts.
-    const std::vector<uint8_t> *sharedEdges = nullptr;
+    // With blocks: the basis of the charts' outlines (chart_outline.h), once per packCharts.
+    const ChartOutlineBasis *outlines = nullptr;
     ChartMasks masks, blocks;
     ChartBitmaps bitmaps;  // of the larger charts, with blocks
     std::vector<ChartPlacement> placements;
@@ -41,7 +41,7 @@ struct Packing {
 bool rasterize(const AtlasCharts &charts, double density, int padding, int maxSide, int threads, Packing &out) {
     if (out.block == 1)
         return rasterizeChartMasks(charts, density, padding, maxSide, out.masks, threads);
-    if (!rasterizeChartMasks(charts, density, padding, maxSide, out.blocks, threads, true, out.sharedEdges))
+    if (!rasterizeChartMasks(charts, density, padding, maxSide, out.blocks, threads, true, out.outlines))
         return false;
     takeChartBitmaps(charts, out.blocks, kLeastBitmapBlocks, out.bitmaps);
     return true;
@@ -206,7 +206,7 @@ bool densestFit(const AtlasCharts &charts, const ChartExtent &extent, const Pack
     }
     Packing trial;
     trial.block = best.block;
-    trial.sharedEdges = best.sharedEdges;
+    trial.outlines = best.outlines;
     // Small models pack in a few milliseconds: their fill tries more and goes on after a fit.
     const bool cheap = known > 0 && charts.faceCount() <= size_t(std::max(0, o.cheapFillFaces));
     // A larger model's fill stops at its first fit: where the aim is within kCloseFillAims of the
@@ -299,10 +299,10 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
     Packing packing;
     packing.block = options.mipBlocks && options.mode == PackMode::Tight ? 2 : 1;
     out.block = packing.block;
-    std::vector<uint8_t> sharedEdges;  // the same for every density tried
+    ChartOutlineBasis outlines;  // the same for every density tried
     if (packing.block > 1) {
-        sharedEdges = chartSharedEdges(charts, options.threads);
-        packing.sharedEdges = &sharedEdges;
+        outlines = chartOutlineBasis(charts, options.threads);
+        packing.outlines = &outlines;
     }
     int height = 0;
     if (options.textureSize > 0) {
@@ -350,7 +350,7 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
                 if (aim >= asked * kLeastFillGain) {
                     Packing trial;
                     trial.block = packing.block;
-                    trial.sharedEdges = packing.sharedEdges;
+                    trial.outlines = packing.outlines;
                     const Fit f = attempt(charts, options, aim, padding, side, height, trial, out.packAttempts);
                     if (f.fits) {
                         out.size = side;
@@ -397,7 +397,7 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
                     break;
                 Packing larger;
                 larger.block = packing.block;
-                larger.sharedEdges = packing.sharedEdges;
+                larger.outlines = packing.outlines;
                 double denser = 0;
                 if (densestFit(charts, extentOf(), options, padding, width, taller, INFINITY, larger, denser,
                                out.packAttempts) &&

@@ -122,7 +122,7 @@ TEST(ChartOutline, SharedEdgesAreMutualAndInsideTheirChart) {
     for (const TestMesh &base : families()) {
         const TestMesh mesh = turned(base, random);
         const AtlasCharts charts = computeCharts(mesh.view());
-        const std::vector<uint8_t> shared = chartSharedEdges(charts);
+        const std::vector<uint8_t> shared = chartOutlineBasis(charts).shared;
         ASSERT_EQ(shared.size(), charts.faceCount()) << mesh.name;
         std::vector<size_t> position(charts.faceCount());
         for (size_t i = 0; i < charts.faceCount(); ++i)
@@ -152,12 +152,12 @@ TEST(ChartOutline, BlockMasksMatchRasterisingEveryTriangle) {
         for (int turn = 0; turn < 3; ++turn) {
             const TestMesh mesh = turned(base, random);
             const AtlasCharts charts = computeCharts(mesh.view());
-            const std::vector<uint8_t> shared = chartSharedEdges(charts);
+            const ChartOutlineBasis basis = chartOutlineBasis(charts);
             for (double density : {0.7, 1.9, 4.0, 8.0, 13.3})
                 for (int padding : {1, 2}) {
                     ChartMasks all, outline;
                     ASSERT_TRUE(rasterizeChartMasks(charts, density, padding, 16384, all, 1, true));
-                    ASSERT_TRUE(rasterizeChartMasks(charts, density, padding, 16384, outline, 1, true, &shared));
+                    ASSERT_TRUE(rasterizeChartMasks(charts, density, padding, 16384, outline, 1, true, &basis));
                     ASSERT_EQ(all.charts.size(), outline.charts.size());
                     const double margin = (padding + 1.0 / 256) / 2;
                     for (size_t c = 0; c < charts.chartCount(); ++c) {
@@ -193,7 +193,7 @@ TEST(ChartOutline, BlockMasksMatchRasterisingEveryTriangle) {
                         if (turn > 0 || padding > 1 || (density != 1.9 && density != 8.0))
                             continue;
                         ChartOutline o;
-                        if (faces < 16 || !chartOutline(charts, c, shared.data(), a.scale, a.offset, a.height, o))
+                        if (faces < 16 || !chartOutline(charts, c, basis, a.scale, a.offset, 1e6, a.height, o))
                             continue;
                         ++outlined;
                         std::vector<uint8_t> inside(size_t(a.width) * size_t(a.height), 0);
@@ -225,4 +225,60 @@ TEST(ChartOutline, BlockMasksMatchRasterisingEveryTriangle) {
     // The corner blocks left out are rare (none on these families when written).
     EXPECT_LE(fewer, blocks / 1000) << fewer << " of " << blocks << " blocks";
     std::printf("%zu charts' insides checked; %zu of %zu blocks left out\n", outlined, fewer, blocks);
+}
+
+// The certificate that spares the outline and the mask's box their pass over every triangle: a
+// chart it certifies at a scale has every triangle counter-clockwise with area under any offset
+// within reach (checked triangle by triangle, as the rasteriser maps them), it certifies nearly
+// every chart of ordinary meshes, and never a chart with a clockwise triangle, one without area,
+// or triangles the rounding of the offset could flatten.
+TEST(ChartOutline, CertifiedChartsTurnLeftUnderEveryOffset) {
+    std::mt19937_64 random(2026);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    size_t certified = 0, charts = 0;
+    for (const TestMesh &base : families()) {
+        const TestMesh mesh = turned(base, random);
+        const AtlasCharts atlasCharts = computeCharts(mesh.view());
+        const ChartOutlineBasis basis = chartOutlineBasis(atlasCharts);
+        for (double scale : {1e-3, 0.37, 2.0, 8.0, 61.0, 900.0})
+            for (size_t c = 0; c < atlasCharts.chartCount(); ++c) {
+                if (atlasCharts.isDegenerate(c))
+                    continue;
+                const double reach = 3 + 40 * std::abs(unit(random));
+                ++charts;
+                if (!basis.certainlyTurnsLeft(c, scale, reach))
+                    continue;
+                ++certified;
+                for (const glm::dvec2 offset : {glm::dvec2(reach, -reach), glm::dvec2(-reach, reach), glm::dvec2(0.0),
+                                                glm::dvec2(unit(random), unit(random)) * reach})
+                    for (uint32_t i = atlasCharts.chartFirstFace[c]; i < atlasCharts.chartFirstFace[c + 1]; ++i) {
+                        glm::dvec2 p[3];
+                        for (int k = 0; k < 3; ++k)
+                            p[k] = (glm::dvec2(atlasCharts.wedgeUv[3 * i + uint32_t(k)]) * scale + offset) * 0.5;
+                        ASSERT_GT(doubleArea(p[0], p[1], p[2]), 0) << mesh.name << " chart " << c << " at " << scale;
+                    }
+            }
+    }
+    EXPECT_GT(certified, charts * 9 / 10) << certified << " of " << charts << " charts certified";
+
+    // A chart of two triangles; one made clockwise, or a sliver of relative area 1e-15.
+    AtlasCharts two;
+    two.chartFirstFace = {0, 2};
+    two.chartFaces = {0, 1};
+    two.faceChart = {0, 0};
+    two.chartAxis = {glm::vec3(0, 0, 1)};
+    two.chartSize = {glm::vec2(4, 4)};
+    two.wedgeUv = {{0, 0}, {4, 0}, {4, 4}, {0, 0}, {4, 4}, {0, 4}};
+    two.faceOpposite = {kNoOpposite, kNoOpposite, 5, kNoOpposite, kNoOpposite, 2};
+    EXPECT_TRUE(chartOutlineBasis(two).certainlyTurnsLeft(0, 2.0, 5.0));
+    std::swap(two.wedgeUv[4], two.wedgeUv[5]);  // the second triangle clockwise
+    EXPECT_FALSE(chartOutlineBasis(two).certainlyTurnsLeft(0, 2.0, 5.0));
+    two.wedgeUv = {{0, 0}, {4, 0}, {4, 4}, {0, 0}, {4, 4}, {2, 2.0000005f}};  // a float sliver: area 2e-6
+    EXPECT_TRUE(chartOutlineBasis(two).certainlyTurnsLeft(0, 2.0, 5.0));
+    // At a scale where the offset's rounding is the triangles' size, nothing is certain.
+    EXPECT_FALSE(chartOutlineBasis(two).certainlyTurnsLeft(0, 1e-14, 5.0));
+    two.wedgeUv[5] = {2, 2};  // no area
+    EXPECT_FALSE(chartOutlineBasis(two).certainlyTurnsLeft(0, 2.0, 5.0));
+    two.wedgeUv[5] = {0, NAN};
+    EXPECT_FALSE(chartOutlineBasis(two).certainlyTurnsLeft(0, 2.0, 5.0));
 }

@@ -36,10 +36,16 @@ std::vector<double> family(int kind, size_t n, std::mt19937 &rng) {
             x = few(rng) * 0.25;
             break;
         default: {  // special values among ordinary ones
-            const double specials[] = {0.0, -0.0, std::numeric_limits<double>::infinity(),
-                                       -std::numeric_limits<double>::infinity(), std::numeric_limits<double>::denorm_min(),
-                                       -std::numeric_limits<double>::denorm_min(), std::numeric_limits<double>::max(),
-                                       std::numeric_limits<double>::lowest(), 1.0, -1.0};
+            const double specials[] = {0.0,
+                                       -0.0,
+                                       std::numeric_limits<double>::infinity(),
+                                       -std::numeric_limits<double>::infinity(),
+                                       std::numeric_limits<double>::denorm_min(),
+                                       -std::numeric_limits<double>::denorm_min(),
+                                       std::numeric_limits<double>::max(),
+                                       std::numeric_limits<double>::lowest(),
+                                       1.0,
+                                       -1.0};
             x = unit(rng) < 0.5 ? specials[rng() % 10] : unit(rng) - 0.5;
         }
         }
