@@ -434,7 +434,9 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
     const size_t bands = runs.count();
     const std::vector<size_t> &from = runs.from;
     std::vector<size_t> nudged(bands, 0);
-    runBands(bands, workers, [&](size_t band) {
+    // Texel positions to UVs: a division, or for powers of two (always, but for a size given
+    // otherwise) the product with the exact reciprocal, the same bits without the divisions.
+    auto place = [&](size_t band, auto toUv) {
         for (size_t c = from[band]; c < from[band + 1]; ++c) {
             const ChartMask &m = packing.packed().charts[c];
             const int b = packing.block;  // the packed mask's size in texels: even with blocks
@@ -445,8 +447,8 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
                 glm::vec2 *uv = &out.wedgeUv[3 * size_t(f)];
                 for (int k = 0; k < 3; ++k) {
                     const glm::dvec2 q = glm::dvec2(charts.wedgeUv[3 * size_t(i) + k]) * m.scale + m.offset;
-                    uv[k] = glm::vec2((turnInMask(q, maskWidth, maskHeight, p.quarterTurns) + glm::dvec2(p.x, p.y)) /
-                                      extent);
+                    uv[k] =
+                        glm::vec2(toUv(turnInMask(q, maskWidth, maskHeight, p.quarterTurns) + glm::dvec2(p.x, p.y)));
                 }
                 if (doubleArea(glm::dvec2(uv[0]) * extent, glm::dvec2(uv[1]) * extent, glm::dvec2(uv[2]) * extent) > 0)
                     continue;
@@ -455,6 +457,14 @@ AtlasLayout packCharts(const AtlasCharts &charts, const PackOptions &options) {
                 ++nudged[band];
             }
         }
+    };
+    const bool powersOfTwo = (out.width & (out.width - 1)) == 0 && (out.height & (out.height - 1)) == 0;
+    const glm::dvec2 perTexel = 1.0 / extent;
+    runBands(bands, workers, [&](size_t band) {
+        if (powersOfTwo)
+            place(band, [&](glm::dvec2 t) { return t * perTexel; });
+        else
+            place(band, [&](glm::dvec2 t) { return t / extent; });
     });
     for (size_t n : nudged)
         out.nudgedFaces += n;
