@@ -79,7 +79,10 @@ public:
 private:
     // Cell column or row of a coordinate; the grid starts one cell below zero. Monotonic in v,
     // which is all the search needs: a point within kReach of p lies in the cells of p +- kReach.
-    int index(double v) const { return int(std::floor(v * perCell_)) + 1; }
+    int index(double v) const {
+        const double cells = v * perCell_;
+        return (std::abs(cells) < 1e9 ? floorToInt(cells) : int(std::floor(cells))) + 1;  // floorToInt: no libm call
+    }
     int clampX(int x) const { return std::clamp(x, 0, width_ - 1); }
     int clampY(int y) const { return std::clamp(y, 0, height_ - 1); }
     size_t cellOf(glm::dvec2 p) const { return size_t(clampY(index(p.y))) * width_ + size_t(clampX(index(p.x))); }
