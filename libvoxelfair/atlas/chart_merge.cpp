@@ -45,45 +45,93 @@ struct Box {
     bool meets(const Box &o) const { return lo.x < o.hi.x && o.lo.x < hi.x && lo.y < o.hi.y && o.lo.y < hi.y; }
 };
 
+// A face's UV box.
+Box boxOf(const glm::vec2 *t) {
+    Box b;
+    b.add(t);
+    return b;
+}
+
 // A large chart's faces bucketed on a uniform grid over its UV box (about two faces per cell),
-// so a merge looks only at the faces near the small chart. Boxes outside the grid are clamped
-// to its border cells on both sides (insert and query), which keeps every meeting pair found.
-// Each cell is a list threaded through one array of entries (newest first): one allocation per
-// grid, not one per cell (a vector per cell was an eighth of the charts' time on large meshes).
+// each face in the one cell of its box's lower corner, the cells' faces side by side in one array
+// (a counting sort: two reads of the chart's faces, no list per cell). Boxes outside the grid are
+// clamped to its border cells (insert and query alike). A query widens its cells downward by the
+// most cells any face's box spans: a face whose box meets the query's has its upper corner in a
+// cell at or above the query's lower one (cells are monotonic in the coordinate), so its lower
+// corner lies at most that span below, and every meeting face is found. Faces moved into the
+// chart after the grid was built go into every cell their box meets instead, each cell's such
+// faces a list threaded through one array of entries (newest first), found without widening.
 constexpr uint32_t kGridFaces = 64;  // charts this large get a grid; smaller ones are scanned
 struct FaceGrid {
-    struct Entry {
-        uint32_t face, next;
-    };
     glm::vec2 lo{0.0f};
     float perCell = 1;
     int nx = 1, ny = 1;
-    std::vector<uint32_t> first;  // per cell, its newest entry (kNone: empty)
-    std::vector<Entry> entries;
-    bool built() const { return !first.empty(); }
-    void cellRange(const Box &b, int &x0, int &y0, int &x1, int &y1) const {
-        auto cell = [&](float v, float o, int n) { return std::clamp(int((v - o) * perCell), 0, n - 1); };
-        x0 = cell(b.lo.x, lo.x, nx), x1 = cell(b.hi.x, lo.x, nx);
-        y0 = cell(b.lo.y, lo.y, ny), y1 = cell(b.hi.y, lo.y, ny);
+    int spanX = 0, spanY = 0;     // the most cells a face's box reaches past its lower corner's
+    std::vector<uint32_t> start;  // per cell, its first face in `faces`; nx * ny + 1 entries
+    std::vector<uint32_t> faces;  // the faces, by cell
+    struct Entry {
+        uint32_t face, next;
+    };
+    std::vector<uint32_t> addedFirst;  // per cell, its newest added entry (kNone: empty)
+    std::vector<Entry> added;          // faces moved in after the grid was built
+    bool built() const { return !start.empty(); }
+    int cellX(float v) const { return std::clamp(int((v - lo.x) * perCell), 0, nx - 1); }
+    int cellY(float v) const { return std::clamp(int((v - lo.y) * perCell), 0, ny - 1); }
+    // The grid of `n` faces `face[i]` with UVs uv[3 i ..]; `cellOf` is scratch.
+    void build(const uint32_t *face, const glm::vec2 *uv, size_t n, std::vector<uint32_t> &cellOf) {
+        Box all;
+        for (size_t i = 0; i < n; ++i)
+            all.add(uv + 3 * i);
+        const glm::vec2 extent = glm::max(all.hi - all.lo, glm::vec2(1e-20f));
+        const double cell = std::sqrt(double(extent.x) * extent.y * 2.0 / double(n));
+        lo = all.lo;
+        nx = std::clamp(int(extent.x / cell) + 1, 1, 1024);
+        ny = std::clamp(int(extent.y / cell) + 1, 1, 1024);
+        perCell = float(std::min(nx / double(extent.x), ny / double(extent.y)));
+        start.assign(size_t(nx) * ny + 1, 0);
+        cellOf.resize(n);
+        for (size_t i = 0; i < n; ++i) {
+            const Box b = boxOf(uv + 3 * i);
+            const int x = cellX(b.lo.x), y = cellY(b.lo.y);
+            spanX = std::max(spanX, cellX(b.hi.x) - x);
+            spanY = std::max(spanY, cellY(b.hi.y) - y);
+            cellOf[i] = uint32_t(y * nx + x);
+            ++start[cellOf[i] + 1];
+        }
+        for (size_t c = 1; c < start.size(); ++c)
+            start[c] += start[c - 1];
+        faces.resize(n);
+        for (size_t i = 0; i < n; ++i)
+            faces[start[cellOf[i]]++] = face[i];
+        for (size_t c = start.size() - 1; c > 0; --c)  // each cell's end back to its start
+            start[c] = start[c - 1];
+        start[0] = 0;
     }
-    void insert(uint32_t f, const Box &b) {
-        int x0, y0, x1, y1;
-        cellRange(b, x0, y0, x1, y1);
-        for (int y = y0; y <= y1; ++y)
-            for (int x = x0; x <= x1; ++x) {
-                uint32_t &head = first[size_t(y) * nx + x];
-                entries.push_back({f, head});
-                head = uint32_t(entries.size() - 1);
+    // Adds face f, of box b, after the grid was built.
+    void add(uint32_t f, const Box &b) {
+        if (addedFirst.empty())
+            addedFirst.assign(size_t(nx) * ny, kNone);
+        for (int y = cellY(b.lo.y); y <= cellY(b.hi.y); ++y)
+            for (int x = cellX(b.lo.x); x <= cellX(b.hi.x); ++x) {
+                uint32_t &head = addedFirst[size_t(y) * nx + x];
+                added.push_back({f, head});
+                head = uint32_t(added.size() - 1);
             }
     }
-    // Appends the faces of the cells that box `b` meets (a face once per cell it is in).
+    // Appends the faces that may meet box `b` (every one that does; an added face once per cell
+    // it is in).
     void query(const Box &b, std::vector<uint32_t> &out) const {
-        int x0, y0, x1, y1;
-        cellRange(b, x0, y0, x1, y1);
-        for (int y = y0; y <= y1; ++y)
-            for (int x = x0; x <= x1; ++x)
-                for (uint32_t e = first[size_t(y) * nx + x]; e != kNone; e = entries[e].next)
-                    out.push_back(entries[e].face);
+        const int x0 = cellX(b.lo.x), x1 = cellX(b.hi.x), y0 = cellY(b.lo.y), y1 = cellY(b.hi.y);
+        for (int y = std::max(0, y0 - spanY); y <= y1; ++y) {
+            const size_t row = size_t(y) * nx;
+            out.insert(out.end(), faces.begin() + start[row + size_t(std::max(0, x0 - spanX))],
+                       faces.begin() + start[row + size_t(x1) + 1]);
+        }
+        if (!addedFirst.empty())
+            for (int y = y0; y <= y1; ++y)
+                for (int x = x0; x <= x1; ++x)
+                    for (uint32_t e = addedFirst[size_t(y) * nx + x]; e != kNone; e = added[e].next)
+                        out.push_back(added[e].face);
     }
 };
 
@@ -106,10 +154,8 @@ size_t mergeSmallCharts(const AtlasMesh &mesh, const uint32_t *opposite, const C
 
     // Each chart's faces as a list (head, tail, next), UVs per face (3f + k) in its chart's frame:
     // the chart's seed plane and origin, minus the shift `lo` that put its box at the origin.
-    // Each face's UV box is kept with its UVs (a moved face's updated when it moves).
     std::vector<uint32_t> head(chartCount), tail(chartCount), count(chartCount), next(faceCount, kNone);
     std::vector<glm::vec2> uv(3 * faceCount), lo(chartCount);
-    std::vector<Box> boxes(faceCount);
     std::vector<uint32_t> &chartOf = charts.faceChart;
     runBands(bands, workers, [&](size_t band) {
         for (size_t c = from[band]; c < from[band + 1]; ++c) {
@@ -122,7 +168,6 @@ size_t mergeSmallCharts(const AtlasMesh &mesh, const uint32_t *opposite, const C
                 if (i + 1 < end)
                     next[f] = charts.chartFaces[i + 1];
                 std::copy_n(&charts.wedgeUv[3 * size_t(i)], 3, &uv[3 * size_t(f)]);
-                boxes[f].add(&uv[3 * size_t(f)]);
             }
             lo[c] = -charts.wedgeUv[3 * size_t(first)];  // the seed's first corner projects to (0, 0)
         }
@@ -139,26 +184,21 @@ size_t mergeSmallCharts(const AtlasMesh &mesh, const uint32_t *opposite, const C
         uint32_t chart;
         float cosine;
     };
+    // A chart's grid is built from its own faces as they stand in `charts` (their UVs there are
+    // the ones in `uv`: a chart with a grid was never moved); faces moved in before are added.
     std::vector<FaceGrid> grids(chartCount);  // built when a large chart is first a candidate
-    auto faceBox = [&](uint32_t f) -> const Box & { return boxes[f]; };
-    auto gridOf = [&](uint32_t a) -> FaceGrid & {
+    auto buildGrid = [&](uint32_t a, std::vector<uint32_t> &cellOf) {
         FaceGrid &g = grids[a];
-        if (g.built())
-            return g;
-        Box all;
-        for (uint32_t f = head[a]; f != kNone; f = next[f])
-            all.add(&uv[3 * size_t(f)]);
-        const glm::vec2 extent = glm::max(all.hi - all.lo, glm::vec2(1e-20f));
-        const double cell = std::sqrt(double(extent.x) * extent.y * 2.0 / count[a]);
-        g.lo = all.lo;
-        g.nx = std::clamp(int(extent.x / cell) + 1, 1, 1024);
-        g.ny = std::clamp(int(extent.y / cell) + 1, 1, 1024);
-        g.perCell = float(std::min(g.nx / double(extent.x), g.ny / double(extent.y)));
-        g.first.assign(size_t(g.nx) * g.ny, kNone);
-        g.entries.reserve(2 * size_t(count[a]));
-        for (uint32_t f = head[a]; f != kNone; f = next[f])
-            g.insert(f, faceBox(f));
-        return g;
+        const uint32_t first = charts.chartFirstFace[a], end = charts.chartFirstFace[a + 1];
+        g.build(&charts.chartFaces[first], &charts.wedgeUv[3 * size_t(first)], end - first, cellOf);
+        for (uint32_t f = next[charts.chartFaces[end - 1]]; f != kNone; f = next[f])
+            g.add(f, boxOf(&uv[3 * size_t(f)]));
+    };
+    std::vector<uint32_t> cellScratch;
+    auto gridOf = [&](uint32_t a) -> const FaceGrid & {
+        if (!grids[a].built())
+            buildGrid(a, cellScratch);
+        return grids[a];
     };
     // On more threads, the grids of the large charts next to a small one are built beforehand,
     // side by side (each reads its own chart only). A grid finds every face whose box meets the
@@ -176,7 +216,9 @@ size_t mergeSmallCharts(const AtlasMesh &mesh, const uint32_t *opposite, const C
                         gridded.push_back(a);
                     }
                 }
-        runBands(gridded.size(), workers, [&](size_t k) { gridOf(gridded[k]); });
+        std::vector<std::vector<uint32_t>> cellScratches(static_cast<size_t>(workers));
+        runWorkerBands(gridded.size(), workers,
+                       [&](size_t k, int worker) { buildGrid(gridded[k], cellScratches[size_t(worker)]); });
     }
     std::vector<uint32_t> near;
     std::vector<Candidate> candidates;
@@ -240,7 +282,7 @@ size_t mergeSmallCharts(const AtlasMesh &mesh, const uint32_t *opposite, const C
             }
             for (size_t n = 0; n < near.size() && fits; ++n) {
                 const uint32_t f = near[n];
-                if (!faceBox(f).meets(box))
+                if (!boxOf(&uv[3 * size_t(f)]).meets(box))
                     continue;
                 for (size_t i = 0; i < faces.size() && fits; ++i)
                     fits = !overlap(&uv[3 * size_t(f)], &moved[3 * i]);
@@ -249,11 +291,9 @@ size_t mergeSmallCharts(const AtlasMesh &mesh, const uint32_t *opposite, const C
                 continue;
             for (size_t i = 0; i < faces.size(); ++i) {
                 std::copy_n(&moved[3 * i], 3, &uv[3 * size_t(faces[i])]);
-                boxes[faces[i]] = Box{};
-                boxes[faces[i]].add(&moved[3 * i]);
                 chartOf[faces[i]] = a;
                 if (grids[a].built())
-                    grids[a].insert(faces[i], faceBox(faces[i]));
+                    grids[a].add(faces[i], boxOf(&moved[3 * i]));
             }
             next[tail[a]] = head[b];
             tail[a] = tail[b];
@@ -267,14 +307,13 @@ size_t mergeSmallCharts(const AtlasMesh &mesh, const uint32_t *opposite, const C
         return 0;
 
     // The charts again, emptied ones left out, each re-boxed to the origin: numbered and given
-    // their first faces in order, then filled side by side.
+    // their first faces in order, then filled side by side, faces and UVs in place (from the
+    // lists and `uv`, which hold all the set-up read from them).
     AtlasCharts out;
     const size_t kept = chartCount - merged;
     out.chartAxis.resize(kept);
     out.chartFirstFace.resize(kept + 1);
     out.chartSize.resize(kept);
-    out.chartFaces.resize(faceCount);
-    out.wedgeUv.resize(3 * faceCount);
     std::vector<uint32_t> renumber(chartCount, kNone);
     for (size_t c = 0, n = 0, at = 0; c < chartCount; ++c) {
         if (count[c] == 0)
@@ -293,7 +332,8 @@ size_t mergeSmallCharts(const AtlasMesh &mesh, const uint32_t *opposite, const C
             glm::vec2 least(std::numeric_limits<float>::max()), most(-std::numeric_limits<float>::max());
             size_t i = first;
             for (uint32_t f = head[c]; f != kNone; f = next[f]) {
-                out.chartFaces[i++] = f;
+                charts.chartFaces[i++] = f;
+                chartOf[f] = uint32_t(n);
                 for (int k = 0; k < 3; ++k) {
                     least = glm::min(least, uv[3 * size_t(f) + k]);
                     most = glm::max(most, uv[3 * size_t(f) + k]);
@@ -304,16 +344,12 @@ size_t mergeSmallCharts(const AtlasMesh &mesh, const uint32_t *opposite, const C
             out.chartSize[n] = most - least;
             for (size_t j = first; j < i; ++j)
                 for (int k = 0; k < 3; ++k)
-                    out.wedgeUv[3 * j + size_t(k)] = uv[3 * size_t(out.chartFaces[j]) + k] - least;
+                    charts.wedgeUv[3 * j + size_t(k)] = uv[3 * size_t(charts.chartFaces[j]) + k] - least;
         }
     });
-    for (uint32_t &c : chartOf)
-        c = renumber[c];
     charts.chartFirstFace = std::move(out.chartFirstFace);
-    charts.chartFaces = std::move(out.chartFaces);
     charts.chartAxis = std::move(out.chartAxis);
     charts.chartSize = std::move(out.chartSize);
-    charts.wedgeUv = std::move(out.wedgeUv);
     return merged;
 }
 
