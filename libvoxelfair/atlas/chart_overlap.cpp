@@ -113,19 +113,53 @@ bool boundaryCrossesItself(const std::vector<ChartBoundaryEdge> &edges) {
     return false;
 }
 
-bool cornersOverlap(std::vector<ChartCorner> &corners) {
+namespace {
+
+// Whether two of one vertex's corners, sorted by `from`, overlap.
+bool sectorsOverlap(const ChartCorner *begin, const ChartCorner *end) {
     constexpr double kTurn = 6.283185307179586, kSlack = 1e-3;
+    for (const ChartCorner *k = begin; k + 1 < end; ++k)  // each sector ends before the next one starts
+        if (k->from + k->width > k[1].from + kSlack)
+            return true;
+    // The last one, past a full turn, into the first.
+    return end - begin > 1 && end[-1].from + end[-1].width > begin->from + kTurn + kSlack;
+}
+
+}  // namespace
+
+bool cornersOverlap(std::vector<ChartCorner> &corners) {
     sortCorners(corners);
     for (size_t i = 0; i < corners.size();) {
         size_t j = i + 1;
         while (j < corners.size() && corners[j].vertex == corners[i].vertex)
             ++j;
-        for (size_t k = i; k + 1 < j; ++k)  // each sector ends before the next one starts
-            if (corners[k].from + corners[k].width > corners[k + 1].from + kSlack)
-                return true;
-        if (j - i > 1 && corners[j - 1].from + corners[j - 1].width > corners[i].from + kTurn + kSlack)
-            return true;  // the last one, past a full turn, into the first
+        if (sectorsOverlap(corners.data() + i, corners.data() + j))
+            return true;
         i = j;
+    }
+    return false;
+}
+
+bool cornersOverlap(const std::vector<ChartCorner> &corners, size_t groups, CornerGroups &scratch) {
+    // Stable counting sort by group, then each group insertion-sorted by angle: the same order
+    // within a group as the general test's, and a group's answer does not depend on the others.
+    std::vector<uint32_t> &start = scratch.start;
+    start.assign(groups + 1, 0);
+    for (const ChartCorner &c : corners)
+        ++start[c.vertex + 1];
+    for (size_t g = 0; g < groups; ++g)
+        start[g + 1] += start[g];
+    scratch.corners.resize(corners.size());
+    ChartCorner *grouped = scratch.corners.data();
+    for (const ChartCorner &c : corners)
+        grouped[start[c.vertex]++] = c;
+    // start[g] is now group g's end.
+    for (size_t g = 0, begin = 0; g < groups; begin = start[g++]) {
+        if (start[g] - begin < 2)
+            continue;  // one sector overlaps nothing
+        insertionSort(grouped + begin, grouped + start[g]);
+        if (sectorsOverlap(grouped + begin, grouped + start[g]))
+            return true;
     }
     return false;
 }

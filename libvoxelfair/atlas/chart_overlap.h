@@ -42,4 +42,13 @@ struct ChartCorner {
 };
 bool cornersOverlap(std::vector<ChartCorner> &corners);
 
+// The same for corners whose `vertex` is a group number below `groups` (a chart's boundary
+// vertices numbered as met: charts.cpp): grouped by a counting sort, linear in the corners and
+// groups, where the general test sorts by vertex. `scratch` holds the grouped corners.
+struct CornerGroups {
+    std::vector<uint32_t> start;
+    std::vector<ChartCorner> corners;
+};
+bool cornersOverlap(const std::vector<ChartCorner> &corners, size_t groups, CornerGroups &scratch);
+
 }  // namespace voxelfair

@@ -245,7 +245,14 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
     struct FoldScratch {
         std::vector<ChartBoundaryEdge> boundary;
         std::vector<ChartCorner> corners;
-        std::vector<uint32_t> boundaryStamp;  // per vertex: the last chart it bounded
+        CornerGroups grouped;
+        // Per vertex: the last chart it bounded, and its number in the check (`round`) that last
+        // numbered it. A chart checked again after a cut keeps its earlier boundary's stamps.
+        struct Stamp {
+            uint32_t chart = UINT32_MAX, round = 0, group = 0;
+        };
+        std::vector<Stamp> boundaryStamp;
+        uint32_t round = 0;
     };
     auto foldsOver = [&](uint32_t c, size_t end, FoldScratch &s) {
         s.boundary.clear();
@@ -262,12 +269,16 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
         }
         if (boundaryCrossesItself(s.boundary))
             return true;
-        // Only the boundary's vertices: around an inner vertex the chart's faces close one fan.
+        // Only the boundary's vertices, numbered as met: around an inner vertex the chart's faces
+        // close one fan.
+        uint32_t groups = 0;
+        const uint32_t round = ++s.round;
         for (const ChartBoundaryEdge &e : s.boundary)
             for (uint32_t v : {e.va, e.vb}) {
                 if (v >= s.boundaryStamp.size())
-                    s.boundaryStamp.resize(size_t(v) + 1, UINT32_MAX);
-                s.boundaryStamp[v] = c;
+                    s.boundaryStamp.resize(size_t(v) + 1);
+                if (s.boundaryStamp[v].chart != c || s.boundaryStamp[v].round != round)
+                    s.boundaryStamp[v] = {c, round, groups++};
             }
         s.corners.clear();
         for (size_t i = out.chartFirstFace[c]; i < end; ++i) {
@@ -276,15 +287,17 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
                 continue;  // no sector (degenerate in UV)
             for (int k = 0; k < 3; ++k) {
                 const uint32_t v = mesh.triangles[3 * size_t(out.chartFaces[i]) + k];
-                if (v >= s.boundaryStamp.size() || s.boundaryStamp[v] != c)
+                if (v >= s.boundaryStamp.size() || s.boundaryStamp[v].chart != c)
                     continue;
+                if (s.boundaryStamp[v].round != round)  // bounded the chart before a cut
+                    s.boundaryStamp[v] = {c, round, groups++};
                 const double from = diamondAngle(glm::dvec2(w[(k + 1) % 3] - w[k]));
                 double to = diamondAngle(glm::dvec2(w[(k + 2) % 3] - w[k]));
                 to += to < from ? kDiamondTurn : 0;
-                s.corners.push_back({v, from, to - from});
+                s.corners.push_back({s.boundaryStamp[v].group, from, to - from});
             }
         }
-        return cornersOverlap(s.corners);
+        return cornersOverlap(s.corners, groups, s.grouped);
     };
     FoldScratch scratch;
     // The last chart, cut back to the half of its faces nearest its seed (a prefix of the
