@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <numeric>
 #include <thread>
 #include <utility>
 
@@ -342,17 +343,23 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
             auto endOf = [&](size_t c) {
                 return c + 1 < out.chartFirstFace.size() ? size_t(out.chartFirstFace[c + 1]) : out.chartFaces.size();
             };
-            // The grown charts' projections, each its own UVs: side by side, one chart a band.
+            // The grown charts projected (each its own UVs) and checked, side by side, one chart
+            // a band, largest first: a few large charts hold most of the work, and started first
+            // they leave the small ones to even out the threads. A chart's check reads its own
+            // UVs only, just written by the same band.
             out.chartSize.resize(size_t(firstChart) + grown);
-            runBands(grown, foldWorkers, [&](size_t k) {
-                const size_t c = firstChart + k;
-                out.chartSize[c] = projectRange(c, endOf(c));
+            std::vector<uint32_t> bySize(grown);
+            std::iota(bySize.begin(), bySize.end(), 0u);
+            std::stable_sort(bySize.begin(), bySize.end(), [&](uint32_t a, uint32_t b) {
+                return endOf(firstChart + a) - out.chartFirstFace[firstChart + a] >
+                       endOf(firstChart + b) - out.chartFirstFace[firstChart + b];
             });
             std::vector<uint8_t> folds(grown, 0);
             std::vector<FoldScratch> scratches(static_cast<size_t>(foldWorkers));
-            // One chart a band: a few large charts hold most of the work.
-            runWorkerBands(grown, foldWorkers, [&](size_t k, int worker) {
-                folds[k] = foldsOver(firstChart + uint32_t(k), endOf(firstChart + k), scratches[size_t(worker)]);
+            runWorkerBands(grown, foldWorkers, [&](size_t band, int worker) {
+                const uint32_t c = firstChart + bySize[band];
+                out.chartSize[c] = projectRange(c, endOf(c));
+                folds[bySize[band]] = foldsOver(c, endOf(c), scratches[size_t(worker)]);
             });
             const size_t folded = size_t(std::find(folds.begin(), folds.end(), 1) - folds.begin());
             if (folded == grown)
