@@ -7,9 +7,11 @@
 #include "base/parallel_bands.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <thread>
 #include <vector>
 
 #include <glm/common.hpp>
@@ -74,7 +76,6 @@ struct FaceGrid {
     };
     std::vector<uint32_t> addedFirst;  // per cell, its newest added entry (kNone: empty)
     std::vector<Entry> added;          // faces moved in after the grid was built
-    bool built() const { return !start.empty(); }
     int cellX(float v) const { return std::clamp(int((v - lo.x) * perCell), 0, nx - 1); }
     int cellY(float v) const { return std::clamp(int((v - lo.y) * perCell), 0, ny - 1); }
     // The grid of `n` faces `face[i]` with UVs uv[3 i ..]; `cellOf` is scratch.
@@ -185,24 +186,46 @@ size_t mergeSmallCharts(const AtlasMesh &mesh, const uint32_t *opposite, const C
         float cosine;
     };
     // A chart's grid is built from its own faces as they stand in `charts` (their UVs there are
-    // the ones in `uv`: a chart with a grid was never moved); faces moved in before are added.
-    std::vector<FaceGrid> grids(chartCount);  // built when a large chart is first a candidate
-    auto buildGrid = [&](uint32_t a, std::vector<uint32_t> &cellOf) {
-        FaceGrid &g = grids[a];
+    // the ones in `uv`: a chart with a grid was never moved). The faces moved into it are added
+    // by the merging thread alone: those moved before its first query at that query, later ones
+    // as they move (`synced`).
+    std::vector<FaceGrid> grids(chartCount);
+    std::vector<std::atomic<uint8_t>> gridState(chartCount);  // 0: not begun, 1: being built, 2: built
+    std::vector<uint8_t> synced(chartCount, 0);
+    // Builds chart a's grid unless another thread began it; true if this one did.
+    auto claimGrid = [&](uint32_t a, std::vector<uint32_t> &cellOf) {
+        uint8_t notBegun = 0;
+        if (!gridState[a].compare_exchange_strong(notBegun, 1, std::memory_order_acq_rel))
+            return false;
         const uint32_t first = charts.chartFirstFace[a], end = charts.chartFirstFace[a + 1];
-        g.build(&charts.chartFaces[first], &charts.wedgeUv[3 * size_t(first)], end - first, cellOf);
-        for (uint32_t f = next[charts.chartFaces[end - 1]]; f != kNone; f = next[f])
-            g.add(f, boxOf(&uv[3 * size_t(f)]));
+        grids[a].build(&charts.chartFaces[first], &charts.wedgeUv[3 * size_t(first)], end - first, cellOf);
+        gridState[a].store(2, std::memory_order_release);
+        return true;
     };
     std::vector<uint32_t> cellScratch;
     auto gridOf = [&](uint32_t a) -> const FaceGrid & {
-        if (!grids[a].built())
-            buildGrid(a, cellScratch);
+        if (!claimGrid(a, cellScratch))
+            while (gridState[a].load(std::memory_order_acquire) != 2)  // being built beside
+                std::this_thread::yield();
+        if (!synced[a]) {
+            synced[a] = 1;
+            for (uint32_t f = next[charts.chartFaces[charts.chartFirstFace[a + 1] - 1]]; f != kNone; f = next[f])
+                grids[a].add(f, boxOf(&uv[3 * size_t(f)]));
+        }
         return grids[a];
     };
-    // On more threads, the grids of the large charts next to a small one are built beforehand,
-    // side by side (each reads its own chart only). A grid finds every face whose box meets the
+    // On more threads, a second thread builds the grids of the large charts next to a small one
+    // while the merges run, in the order the merges first ask for them; a grid the merges want
+    // before it came to it they build themselves. A grid finds every face whose box meets the
     // query's whenever it was built, so the merges are the same as with grids built on demand.
+    std::atomic<bool> merging{true};
+    struct Joined {
+        std::thread thread;
+        ~Joined() {
+            if (thread.joinable())
+                thread.join();
+        }
+    } builder;
     if (workers > 1) {
         std::vector<uint8_t> wanted(chartCount, 0);
         std::vector<uint32_t> gridded;
@@ -216,9 +239,11 @@ size_t mergeSmallCharts(const AtlasMesh &mesh, const uint32_t *opposite, const C
                         gridded.push_back(a);
                     }
                 }
-        std::vector<std::vector<uint32_t>> cellScratches(static_cast<size_t>(workers));
-        runWorkerBands(gridded.size(), workers,
-                       [&](size_t k, int worker) { buildGrid(gridded[k], cellScratches[size_t(worker)]); });
+        builder.thread = std::thread([&, gridded = std::move(gridded)] {
+            std::vector<uint32_t> cellOf;
+            for (size_t k = 0; k < gridded.size() && merging.load(std::memory_order_relaxed); ++k)
+                claimGrid(gridded[k], cellOf);
+        });
     }
     std::vector<uint32_t> near;
     std::vector<Candidate> candidates;
@@ -292,7 +317,7 @@ size_t mergeSmallCharts(const AtlasMesh &mesh, const uint32_t *opposite, const C
             for (size_t i = 0; i < faces.size(); ++i) {
                 std::copy_n(&moved[3 * i], 3, &uv[3 * size_t(faces[i])]);
                 chartOf[faces[i]] = a;
-                if (grids[a].built())
+                if (synced[a])
                     grids[a].add(faces[i], boxOf(&moved[3 * i]));
             }
             next[tail[a]] = head[b];
@@ -303,6 +328,9 @@ size_t mergeSmallCharts(const AtlasMesh &mesh, const uint32_t *opposite, const C
             break;
         }
     }
+    merging.store(false, std::memory_order_relaxed);
+    if (builder.thread.joinable())
+        builder.thread.join();
     if (merged == 0)
         return 0;
 
