@@ -11,10 +11,13 @@
 
 #include <algorithm>
 #include <atomic>
+#include <condition_variable>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <limits>
-#include <numeric>
+#include <memory>
+#include <mutex>
 #include <thread>
 #include <utility>
 
@@ -187,6 +190,8 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
 
     // Breadth-first growth from `seed`: the queue, in a buffer of its own (written through a
     // pointer, no capacity check per face), is the chart's faces in order, appended at the end.
+    // The queue stands where the chart's faces stand in chartFaces, so the buffer holds the same
+    // faces there (read by the fold checks beside the growth, which leave chartFaces alone).
     auto scaleOf = [&](uint32_t f) { return mesh.faceTexelScale ? mesh.faceTexelScale[f] : 1.0f; };
     std::vector<uint32_t> growQueue(faceCount);
     auto grow = [&](uint32_t seed) {
@@ -196,7 +201,7 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
         out.chartAxis.push_back(axis);
         out.chartFirstFace.push_back(uint32_t(out.chartFaces.size()));
         out.faceChart[seed] = chart;
-        uint32_t *queue = growQueue.data();
+        uint32_t *queue = growQueue.data() + out.chartFaces.size();
         size_t queued = 0;
         queue[queued++] = seed;
         for (size_t q = 0; q < queued; ++q) {
@@ -216,14 +221,14 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
         return chart;
     };
 
-    // Orthographic projection of chart c (its faces up to chartFaces[end]) onto its seed plane,
-    // relative to the seed's first corner (keeps the numbers small), shifted so its box starts at
-    // the origin; returns the box's size. Writes chart c's UVs only.
-    auto projectRange = [&](size_t c, size_t end) {
-        const size_t first = out.chartFirstFace[c];
+    // Orthographic projection of a chart (faces[first] up to faces[end] of `faces`, chartFaces or
+    // the growth's buffer) onto its seed plane (its seed's normal: its axis), relative to the
+    // seed's first corner (keeps the numbers small), shifted so its box starts at the origin;
+    // returns the box's size. Writes the chart's UVs only.
+    auto projectFaces = [&](const uint32_t *faces, size_t first, size_t end) {
         glm::vec2 *uv = out.wedgeUv.data() + 3 * first, *uvEnd = out.wedgeUv.data() + 3 * end;
-        const SeedPlane plane = seedPlane(glm::normalize(glm::dvec3(out.chartAxis[c])));
-        const uint32_t *faces = out.chartFaces.data() + first;
+        faces += first;
+        const SeedPlane plane = seedPlane(glm::normalize(glm::dvec3(normals[faces[0]].cone)));
         const glm::dvec3 origin = mesh.positions[mesh.triangles[3 * faces[0]]];
         const double scale = scaleOf(faces[0]);
         glm::vec2 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
@@ -238,11 +243,14 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
         return hi - lo;
     };
     // The last chart's projection.
-    auto project = [&](size_t c) { out.chartSize.push_back(projectRange(c, out.chartFaces.size())); };
+    auto project = [&](size_t c) {
+        out.chartSize.push_back(projectFaces(out.chartFaces.data(), out.chartFirstFace[c], out.chartFaces.size()));
+    };
 
-    // Whether chart c's projection (its faces up to chartFaces[end]) winds over itself
-    // (chart_overlap.h). Reads the charts only: checks of grown charts can run side by side, each
-    // with its own scratch.
+    // Whether chart c's projection (faces[first] up to faces[end], its UVs written) winds over
+    // itself (chart_overlap.h). Reads the chart's own faces and UVs only (a face's neighbour is in
+    // the chart when stamped with the check's round, not by faceChart, which the growth beside
+    // may be writing): checks of grown charts can run side by side, each with its own scratch.
     struct FoldScratch {
         std::vector<ChartBoundaryEdge> boundary;
         std::vector<ChartCorner> corners;
@@ -253,15 +261,21 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
             uint32_t chart = UINT32_MAX, round = 0, group = 0;
         };
         std::vector<Stamp> boundaryStamp;
+        std::vector<uint32_t> faceRound;  // per face: the last check whose chart held it
         uint32_t round = 0;
     };
-    auto foldsOver = [&](uint32_t c, size_t end, FoldScratch &s) {
+    auto foldsOver = [&](uint32_t c, const uint32_t *faces, size_t first, size_t end, FoldScratch &s) {
+        const uint32_t round = ++s.round;
+        if (s.faceRound.empty())
+            s.faceRound.assign(faceCount, 0);
+        for (size_t i = first; i < end; ++i)
+            s.faceRound[faces[i]] = round;
         s.boundary.clear();
-        for (size_t i = out.chartFirstFace[c]; i < end; ++i) {
-            const uint32_t f = out.chartFaces[i];
+        for (size_t i = first; i < end; ++i) {
+            const uint32_t f = faces[i];
             for (int k = 0; k < 3; ++k) {
                 const uint32_t o = adjacency.opposite[3 * f + k];
-                if (o != kNoOpposite && out.faceChart[o / 3] == c)
+                if (o != kNoOpposite && s.faceRound[o / 3] == round)
                     continue;
                 const int k1 = (k + 1) % 3;
                 s.boundary.push_back({out.wedgeUv[3 * i + k], out.wedgeUv[3 * i + k1], mesh.triangles[3 * f + k],
@@ -273,7 +287,6 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
         // Only the boundary's vertices, numbered as met: around an inner vertex the chart's faces
         // close one fan.
         uint32_t groups = 0;
-        const uint32_t round = ++s.round;
         for (const ChartBoundaryEdge &e : s.boundary)
             for (uint32_t v : {e.va, e.vb}) {
                 if (v >= s.boundaryStamp.size())
@@ -282,12 +295,12 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
                     s.boundaryStamp[v] = {c, round, groups++};
             }
         s.corners.clear();
-        for (size_t i = out.chartFirstFace[c]; i < end; ++i) {
+        for (size_t i = first; i < end; ++i) {
             const glm::vec2 *w = &out.wedgeUv[3 * i];
             if (doubleArea(w[0], w[1], w[2]) <= 0)
                 continue;  // no sector (degenerate in UV)
             for (int k = 0; k < 3; ++k) {
-                const uint32_t v = mesh.triangles[3 * size_t(out.chartFaces[i]) + k];
+                const uint32_t v = mesh.triangles[3 * size_t(faces[i]) + k];
                 if (v >= s.boundaryStamp.size() || s.boundaryStamp[v].chart != c)
                     continue;
                 if (s.boundaryStamp[v].round != round)  // bounded the chart before a cut
@@ -305,7 +318,7 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
     // breadth-first order, so still connected) while it winds over itself; true if it was.
     auto cutWhileFolded = [&](uint32_t c) {
         bool cut = false;
-        while (foldsOver(c, out.chartFaces.size(), scratch)) {
+        while (foldsOver(c, out.chartFaces.data(), out.chartFirstFace[c], out.chartFaces.size(), scratch)) {
             const size_t first = out.chartFirstFace[c];
             const size_t keep = first + std::max<size_t>(1, (out.chartFaces.size() - first) / 2);
             for (size_t i = keep; i < out.chartFaces.size(); ++i)
@@ -320,10 +333,12 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
     };
 
     // Charts in seed order, each checked for folds as it is grown; the faces a folded chart lets
-    // go are charted in a further pass. The first pass of a larger mesh is grown whole first and
-    // its charts checked afterwards on two threads: the checks only read the charts, so without a
-    // fold that is the same as checking each at once. At the first chart that folds, the charts
-    // grown after it are dropped (their faces freed) and the pass goes on from its seed as before.
+    // go are charted in a further pass. The first pass of a larger mesh is grown whole while the
+    // other threads project and check each chart as soon as it is grown (the main thread joins
+    // them when the growth is done): the checks read only the growth's buffer, the normals and
+    // each its own chart's UVs, so without a fold that is the same as checking each at once. At
+    // the first chart that folds, the charts grown after it are dropped (their faces freed) and the
+    // pass goes on from its seed as before.
     const int foldWorkers = faceCount >= kLeastParallelFaces ? bandThreads(options.threads, 2) : 1;
     bool speculate = foldWorkers > 1;
     for (bool released = true; released;) {
@@ -332,36 +347,70 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
         if (speculate) {
             speculate = false;
             const uint32_t firstChart = uint32_t(out.chartAxis.size());
+            const size_t firstFace = out.chartFaces.size();
             std::vector<size_t> seedAt;  // per chart grown here: its seed's position in `order`
+            // Per chart grown here (at most one a face): its end in the growth's buffer, its size
+            // and whether it folds, written by the one thread that grew or checked it (left
+            // uninitialised: only the grown charts' are written and read).
+            const size_t most = faceCount - firstFace;
+            const std::unique_ptr<uint32_t[]> ends(new uint32_t[most]);
+            const std::unique_ptr<glm::vec2[]> sizes(new glm::vec2[most]);
+            const std::unique_ptr<uint8_t[]> folds(new uint8_t[most]);
+            // A thread ahead of the growth sleeps (a busy wait would take the core from the growth
+            // on a loaded machine); the growth wakes it when it publishes a chart or ends. Both
+            // sides' flags are sequentially consistent: a waiter that counted itself in sees the
+            // chart, or the growth sees the waiter.
+            std::atomic<size_t> published{0}, taken{0}, waiters{0};  // grown, handed out, asleep
+            std::atomic<bool> growing{true};
+            std::mutex wakeLock;
+            std::condition_variable wake;
+            auto publish = [&](size_t grownSoFar) {
+                published.store(grownSoFar);
+                if (waiters.load() > 0) {
+                    const std::lock_guard<std::mutex> lock(wakeLock);
+                    wake.notify_all();
+                }
+            };
+            auto checkGrown = [&](FoldScratch &s) {
+                for (size_t k = taken++;; k = taken++) {
+                    if (k >= published.load() && growing.load()) {
+                        std::unique_lock<std::mutex> lock(wakeLock);
+                        ++waiters;
+                        wake.wait(lock, [&] { return k < published.load() || !growing.load(); });
+                        --waiters;
+                    }
+                    if (k >= published.load())
+                        return;  // the growth is done and grew no chart k
+                    const size_t first = k > 0 ? ends[k - 1] : firstFace;
+                    sizes[k] = projectFaces(growQueue.data(), first, ends[k]);
+                    folds[k] = foldsOver(firstChart + uint32_t(k), growQueue.data(), first, ends[k], s);
+                }
+            };
+            std::vector<FoldScratch> scratches(static_cast<size_t>(foldWorkers));
+            std::vector<std::thread> checkers;
+            checkers.reserve(scratches.size() - 1);
+            for (size_t w = 1; w < scratches.size(); ++w)
+                checkers.emplace_back(checkGrown, std::ref(scratches[w]));
             for (size_t k = 0; k < order.size(); ++k) {
                 if (out.faceChart[order[k]] != kFree)
                     continue;
                 grow(order[k]);
+                ends[seedAt.size()] = uint32_t(out.chartFaces.size());
                 seedAt.push_back(k);
+                publish(seedAt.size());
             }
+            growing.store(false);
+            {
+                const std::lock_guard<std::mutex> lock(wakeLock);
+                wake.notify_all();
+            }
+            checkGrown(scratches[0]);
+            for (std::thread &t : checkers)
+                t.join();
             const size_t grown = seedAt.size();
-            auto endOf = [&](size_t c) {
-                return c + 1 < out.chartFirstFace.size() ? size_t(out.chartFirstFace[c + 1]) : out.chartFaces.size();
-            };
-            // The grown charts projected (each its own UVs) and checked, side by side, one chart
-            // a band, largest first: a few large charts hold most of the work, and started first
-            // they leave the small ones to even out the threads. A chart's check reads its own
-            // UVs only, just written by the same band.
-            out.chartSize.resize(size_t(firstChart) + grown);
-            std::vector<uint32_t> bySize(grown);
-            std::iota(bySize.begin(), bySize.end(), 0u);
-            std::stable_sort(bySize.begin(), bySize.end(), [&](uint32_t a, uint32_t b) {
-                return endOf(firstChart + a) - out.chartFirstFace[firstChart + a] >
-                       endOf(firstChart + b) - out.chartFirstFace[firstChart + b];
-            });
-            std::vector<uint8_t> folds(grown, 0);
-            std::vector<FoldScratch> scratches(static_cast<size_t>(foldWorkers));
-            runWorkerBands(grown, foldWorkers, [&](size_t band, int worker) {
-                const uint32_t c = firstChart + bySize[band];
-                out.chartSize[c] = projectRange(c, endOf(c));
-                folds[bySize[band]] = foldsOver(c, endOf(c), scratches[size_t(worker)]);
-            });
-            const size_t folded = size_t(std::find(folds.begin(), folds.end(), 1) - folds.begin());
+            auto endOf = [&](size_t c) { return ends[c - firstChart]; };
+            out.chartSize.insert(out.chartSize.end(), sizes.get(), sizes.get() + grown);
+            const size_t folded = size_t(std::find(folds.get(), folds.get() + grown, 1) - folds.get());
             if (folded == grown)
                 break;  // no chart folds: the pass is done, and nothing was let go
             const uint32_t c = firstChart + uint32_t(folded);
