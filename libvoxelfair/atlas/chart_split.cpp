@@ -65,36 +65,38 @@ size_t splitSparseCharts(const uint32_t *opposite, const ChartSplitOptions &opti
     if (std::find(sparse.begin(), sparse.end(), 1) == sparse.end())
         return 0;
 
-    // Entry (position in chartFaces) of each face, and the piece each entry of the chart being
-    // cut is in (a label per entry; UINT32_MAX: another chart).
-    std::vector<uint32_t> entryOf(charts.faceCount(), UINT32_MAX);
-    for (size_t i = 0; i < charts.chartFaces.size(); ++i)
-        entryOf[charts.chartFaces[i]] = uint32_t(i);
+    // The pieces of a cut chart fill the chart's own range of chartFaces, so every face keeps
+    // its place but for the reordering inside cut charts: the faces and UVs are rewritten in
+    // place there only, the per-chart arrays anew, and faceChart where the charts' numbers moved.
+    // Entry (position in chartFaces) of each face of the chart being cut, and the piece each entry
+    // of it is in (a label per entry; UINT32_MAX: never cut).
+    std::vector<uint32_t> entryOf(charts.faceCount());
     std::vector<uint32_t> label(charts.chartFaces.size(), UINT32_MAX);
     uint32_t nextLabel = 0;
 
-    AtlasCharts rebuilt;
-    rebuilt.faceChart.resize(charts.faceCount());
-    rebuilt.chartFaces.reserve(charts.chartFaces.size());
-    rebuilt.wedgeUv.reserve(charts.wedgeUv.size());
-    // A piece (entries in chart order) of a cut chart becomes a chart, moved to the origin.
-    auto emit = [&](size_t c, const std::vector<uint32_t> &piece, const Box &box) {
-        const uint32_t chart = uint32_t(rebuilt.chartAxis.size());
+    AtlasCharts rebuilt;                         // the per-chart arrays
+    std::vector<uint32_t> newFirst(chartCount);  // per old chart: its first new chart
+    std::vector<uint32_t> oldFaces;              // the chart being cut: its faces and UVs as they were
+    std::vector<glm::vec2> oldUv;
+    // A piece (entries in chart order) of chart c, being cut, becomes a chart, moved to the
+    // origin, written at `at` onward (faceChart, which the cuts read, at the end).
+    auto emit = [&](size_t c, const std::vector<uint32_t> &piece, const Box &box, size_t &at) {
         rebuilt.chartAxis.push_back(charts.chartAxis[c]);
-        rebuilt.chartFirstFace.push_back(uint32_t(rebuilt.chartFaces.size()));
+        rebuilt.chartFirstFace.push_back(uint32_t(at));
         const glm::vec2 lo = box.lo;
         rebuilt.chartSize.push_back(box.hi - box.lo);
+        const size_t first = charts.chartFirstFace[c];
         for (uint32_t i : piece) {
-            const uint32_t f = charts.chartFaces[i];
-            rebuilt.faceChart[f] = chart;
-            rebuilt.chartFaces.push_back(f);
+            charts.chartFaces[at] = oldFaces[i - first];
             for (int k = 0; k < 3; ++k)
-                rebuilt.wedgeUv.push_back(charts.wedgeUv[3 * size_t(i) + k] - lo);
+                charts.wedgeUv[3 * at + size_t(k)] = oldUv[3 * (i - first) + size_t(k)] - lo;
+            ++at;
         }
     };
 
-    // The edge-connected parts of `side` (entries labelled `side`'s label), each in chart order.
-    auto parts = [&](const std::vector<uint32_t> &side, std::vector<std::vector<uint32_t>> &out) {
+    // The edge-connected parts of `side` (entries labelled `side`'s label, all of chart c), each
+    // in chart order.
+    auto parts = [&](size_t c, const std::vector<uint32_t> &side, std::vector<std::vector<uint32_t>> &out) {
         const uint32_t from = nextLabel;
         const uint32_t sideLabel = label[side[0]];
         std::vector<uint32_t> queue;
@@ -108,7 +110,7 @@ size_t splitSparseCharts(const uint32_t *opposite, const ChartSplitOptions &opti
                 const uint32_t f = charts.chartFaces[queue[q]];
                 for (int k = 0; k < 3; ++k) {
                     const uint32_t h = opposite[3 * size_t(f) + size_t(k)];
-                    if (h == kNoOpposite)
+                    if (h == kNoOpposite || charts.faceChart[h / 3] != c)
                         continue;
                     const uint32_t e = entryOf[h / 3];
                     if (label[e] == sideLabel)
@@ -127,22 +129,18 @@ size_t splitSparseCharts(const uint32_t *opposite, const ChartSplitOptions &opti
     std::vector<std::pair<std::vector<uint32_t>, Box>> done;  // pieces in chart order, with their boxes
     for (size_t c = 0; c < chartCount; ++c) {
         const uint32_t first = charts.chartFirstFace[c], end = charts.chartFirstFace[c + 1];
+        newFirst[c] = uint32_t(rebuilt.chartAxis.size());
         if (!sparse[c]) {  // kept whole, as it is
-            const uint32_t chart = uint32_t(rebuilt.chartAxis.size());
             rebuilt.chartAxis.push_back(charts.chartAxis[c]);
-            rebuilt.chartFirstFace.push_back(uint32_t(rebuilt.chartFaces.size()));
+            rebuilt.chartFirstFace.push_back(first);
             rebuilt.chartSize.push_back(charts.chartSize[c]);
-            rebuilt.chartFaces.insert(rebuilt.chartFaces.end(), charts.chartFaces.begin() + first,
-                                      charts.chartFaces.begin() + end);
-            rebuilt.wedgeUv.insert(rebuilt.wedgeUv.end(), charts.wedgeUv.begin() + 3 * std::ptrdiff_t(first),
-                                   charts.wedgeUv.begin() + 3 * std::ptrdiff_t(end));
-            for (uint32_t i = first; i < end; ++i)
-                rebuilt.faceChart[charts.chartFaces[i]] = chart;
             continue;
         }
         std::vector<uint32_t> all(end - first);
-        for (uint32_t i = first; i < end; ++i)
+        for (uint32_t i = first; i < end; ++i) {
             all[i - first] = i;
+            entryOf[charts.chartFaces[i]] = i;
+        }
         ++cut;
         for (uint32_t i : all)
             label[i] = nextLabel;
@@ -185,18 +183,36 @@ size_t splitSparseCharts(const uint32_t *opposite, const ChartSplitOptions &opti
             }
             std::vector<std::vector<uint32_t>> split;
             for (const std::vector<uint32_t> &side : sides)
-                parts(side, split);
+                parts(c, side, split);
             for (std::vector<uint32_t> &p : split)
                 stack.push_back(std::move(p));
         }
         // Each piece keeps the chart's order (sides and parts keep it); pieces by their first faces.
         std::sort(done.begin(), done.end(), [](const auto &a, const auto &b) { return a.first[0] < b.first[0]; });
+        oldFaces.assign(charts.chartFaces.begin() + first, charts.chartFaces.begin() + end);
+        oldUv.assign(charts.wedgeUv.begin() + 3 * std::ptrdiff_t(first),
+                     charts.wedgeUv.begin() + 3 * std::ptrdiff_t(end));
+        size_t at = first;
         for (const auto &[piece, box] : done)
-            emit(c, piece, box);
+            emit(c, piece, box, at);
     }
-    rebuilt.chartFirstFace.push_back(uint32_t(rebuilt.chartFaces.size()));
+    rebuilt.chartFirstFace.push_back(uint32_t(charts.chartFaces.size()));
 
-    charts.swapCharts(rebuilt);
+    // The faces' new charts where their numbers moved (pieces, and charts after the first cut
+    // one), side by side: each run's charts' faces alone.
+    newFirst.push_back(uint32_t(rebuilt.chartAxis.size()));
+    runBands(bands, workers, [&](size_t band) {
+        for (size_t c = from[band]; c < from[band + 1]; ++c) {
+            if (!sparse[c] && newFirst[c] == c)
+                continue;
+            for (uint32_t n = newFirst[c]; n < newFirst[c + 1]; ++n)
+                for (uint32_t i = rebuilt.chartFirstFace[n]; i < rebuilt.chartFirstFace[n + 1]; ++i)
+                    charts.faceChart[charts.chartFaces[i]] = n;
+        }
+    });
+    charts.chartFirstFace.swap(rebuilt.chartFirstFace);
+    charts.chartAxis.swap(rebuilt.chartAxis);
+    charts.chartSize.swap(rebuilt.chartSize);
     charts.splitCharts += cut;
     return cut;
 }
