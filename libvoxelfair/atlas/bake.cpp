@@ -1,5 +1,7 @@
 #include "atlas/bake.h"
 
+#include "atlas/bake_bands.h"
+
 #include "atlas/chart_runs.h"
 #include "atlas/texel_raster.h"
 #include "base/byte_words.h"
@@ -31,9 +33,6 @@ namespace {
 // Slightly strict coverage (see kMaskMargin in chart_masks.cpp): the bake never paints outside
 // the packed masks.
 constexpr double kBakeMargin = -1.0 / 256;
-
-// Bands of rows painted on threads: two per worker (for the load balance), at most 64 workers.
-constexpr size_t kMaxBands = 128;
 
 // The image being baked: RGBA rows from the top, as AtlasTexture::rgba, and per texel whether
 // it is painted (a face's texel or a dilation ring's).
@@ -402,45 +401,11 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
             paintBox(clampToInt(p.x - kUvRounding, 0, width - 1), clampToInt(p.x + kUvRounding, 0, width - 1),
                      clampToInt(p.y - kUvRounding, 0, height - 1), clampToInt(p.y + kUvRounding, 0, height - 1));
     };
-    // Every face in order; a later face's centre texels overwrite earlier faces' edge texels.
-    // Bands of rows run on their own threads, each taking every face in order on its rows only:
-    // the same texels as one pass, for any thread count.
-    // One colour per face: the centres first (every face), then the overlapped texels and, for
-    // crisp bakes, the thin faces, face by face in one pass: both come after every centre, the
-    // overlaps only fill empty texels and the thin faces paint over anything, so a texel ends
-    // with the last thin face's colour where one holds it, else with the first overlapping
-    // face's, as when the thin faces come after all the overlaps.
+    // Bands of rows about as many faces each, and the faces each band takes (bake_bands.h).
     const int workers = bandThreads(options.threads, size_t(height));
-    const size_t bands = workers > 1 && mesh.faceCount >= kLeastParallelFaces ? size_t(2 * workers) : 1;
-    auto rowsOf = [&](size_t band, int &rowFrom, int &rowTo) {
-        rowFrom = int(size_t(height) * band / bands);
-        rowTo = int(size_t(height) * (band + 1) / bands) - 1;
-    };
-    // The faces each band takes: a face reaches rows floor(min y - 1 - margin) to floor(max y +
-    // margin) (margin < 0), its thin-face points rows floor(min y - kUvRounding) to floor(max y +
-    // kUvRounding), clamped onto the texture (the first and last bands take the faces beyond
-    // it). Sorted once, in shares of the faces (one per worker) each listing its faces band by
-    // band in order, so that a band reads its faces in order without looking at the others.
-    const size_t shares = bands > 1 ? size_t(workers) : 0;
-    std::vector<std::vector<uint32_t>> facesOf(shares * bands);  // share * bands + band
-    runBands(shares, workers, [&](size_t share) {
-        int rowFrom[kMaxBands], rowTo[kMaxBands];
-        for (size_t band = 0; band < bands; ++band)
-            rowsOf(band, rowFrom[band], rowTo[band]);
-        const size_t from = mesh.faceCount * share / shares, to = mesh.faceCount * (share + 1) / shares;
-        for (size_t band = 0; band < bands; ++band)
-            facesOf[share * bands + band].reserve((to - from) / bands * 5 / 4 + 16);
-        const double h = height;
-        for (size_t f = from; f < to; ++f) {
-            const glm::vec2 *uv = &layout.wedgeUv[3 * f];
-            const double y0 = double(uv[0].y) * h, y1 = double(uv[1].y) * h, y2 = double(uv[2].y) * h;
-            const double minY = min3(y0, y1, y2), maxY = max3(y0, y1, y2);
-            for (size_t band = 0; band < bands; ++band)
-                if (!(rowFrom[band] > 0 && maxY < rowFrom[band] - 1.0) &&
-                    !(rowTo[band] < height - 1 && minY > rowTo[band] + 2.0))
-                    facesOf[share * bands + band].push_back(uint32_t(f));
-        }
-    });
+    const BakeBands bands =
+        bakeBands(layout.wedgeUv, height,
+                  workers > 1 && mesh.faceCount >= kLeastParallelFaces ? size_t(2 * workers) : 1, workers);
     // Every face in order; a later face's centre texels overwrite earlier faces' edge texels.
     // Bands of rows run on their own threads, each taking every face in order on its rows only:
     // the same texels as one pass, for any thread count.
@@ -449,22 +414,11 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
     // overlaps only fill empty texels and the thin faces paint over anything, so a texel ends
     // with the last thin face's colour where one holds it, else with the first overlapping
     // face's, as when the thin faces come after all the overlaps.
-    runBands(bands, workers, [&](size_t band) {
-        int rowFrom, rowTo;
-        rowsOf(band, rowFrom, rowTo);
+    runBands(bands.count(), workers, [&](size_t band) {
+        const int rowFrom = bands.rowFrom(band), rowTo = bands.rowTo(band);
         canvas.clear(rowFrom, rowTo);  // the bands' rows cover the image
-        auto eachFace = [&](auto &&visit) {
-            if (bands == 1) {
-                for (size_t f = 0; f < mesh.faceCount; ++f)
-                    visit(f);
-                return;
-            }
-            for (size_t share = 0; share < shares; ++share)
-                for (const uint32_t f : facesOf[share * bands + band])
-                    visit(size_t(f));
-        };
         glm::dvec2 q[3];
-        eachFace([&](size_t f) {
+        bands.forEachFace(band, [&](size_t f) {
             load(f, q);
             if (uniform)
                 paintCentres(f, q, rowFrom, rowTo);
@@ -472,7 +426,7 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
                 paintFace(f, q, rowFrom, rowTo);
         });
         if (uniform)
-            eachFace([&](size_t f) {
+            bands.forEachFace(band, [&](size_t f) {
                 load(f, q);
                 paintOverlapped(f, q, rowFrom, rowTo);
                 if (crisp)
@@ -480,9 +434,9 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
             });
     });
     out.dilation = options.dilation < 0 ? layout.gutter / 2 : std::min(options.dilation, width);
-    dilate(canvas, out.dilation, bands > 1 ? workers : 1);
+    dilate(canvas, out.dilation, bands.count() > 1 ? workers : 1);
     if (layout.block == 2 && out.dilation > 0)
-        fillBlocks(canvas, bands > 1 ? workers : 1);
+        fillBlocks(canvas, bands.count() > 1 ? workers : 1);
     return out;
 }
 
