@@ -281,7 +281,7 @@ inline void testedSpan(const Inside &inside, int x0, int x1, int y, int &xl, int
     xl = x0, xr = x1;
     while (xl <= xr && !inside(xl, y))
         ++xl;
-    while (xr >= xl && !inside(xr, y))
+    while (xr > xl && !inside(xr, y))  // xl, when found, is not tested again
         --xr;
 }
 // testedSpan on each row of `test`'s box within rowFrom..rowTo, visitSpan(y, xl, xr) where not empty.
