@@ -10,6 +10,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <thread>
 #include <vector>
@@ -156,7 +157,9 @@ size_t mergeSmallCharts(const AtlasMesh &mesh, const uint32_t *opposite, const C
     // Each chart's faces as a list (head, tail, next), UVs per face (3f + k) in its chart's frame:
     // the chart's seed plane and origin, minus the shift `lo` that put its box at the origin.
     std::vector<uint32_t> head(chartCount), tail(chartCount), count(chartCount), next(faceCount, kNone);
-    std::vector<glm::vec2> uv(3 * faceCount), lo(chartCount);
+    // `uv` left uninitialised: the set-up writes every face's.
+    const std::unique_ptr<glm::vec2[]> uv(new glm::vec2[3 * faceCount]);
+    std::vector<glm::vec2> lo(chartCount);
     std::vector<uint32_t> &chartOf = charts.faceChart;
     runBands(bands, workers, [&](size_t band) {
         for (size_t c = from[band]; c < from[band + 1]; ++c) {

@@ -90,7 +90,8 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
     // geometric one) and the unit geometric normal; both zero for a degenerate face, which so
     // never passes a cone test (cone >= 0.05). Side by side for the breadth-first search.
     using FaceNormals = ChartFaceNormals;
-    std::vector<FaceNormals> normals(faceCount, FaceNormals{glm::vec3(0.0f), glm::vec3(0.0f)});
+    // Left uninitialised here and written (zeros included) face by face, on the threads.
+    const std::unique_ptr<FaceNormals[]> normals(new FaceNormals[faceCount]);
     std::vector<uint8_t> degenerate(faceCount, 0);
     std::vector<uint32_t> order;
     // Faces [begin, end)'s normals; returns (non-finite faces, ignored normals).
@@ -99,6 +100,7 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
         for (size_t f = begin; f < end; ++f) {
             const uint32_t *t = mesh.triangles + 3 * f;
             const glm::dvec3 p0 = mesh.positions[t[0]], p1 = mesh.positions[t[1]], p2 = mesh.positions[t[2]];
+            normals[f] = FaceNormals{glm::vec3(0.0f), glm::vec3(0.0f)};
             if (!finite(glm::vec3(p0)) || !finite(glm::vec3(p1)) || !finite(glm::vec3(p2))) {
                 degenerate[f] = 1;
                 ++counts.first;
@@ -455,7 +457,7 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
     merge.mostFaces = options.mergeFaces;
     merge.minCosine = std::max(0.05f, std::min(options.mergeCosine, cone));
     merge.threads = options.threads;
-    out.mergedCharts = mergeSmallCharts(mesh, adjacency.opposite.data(), normals.data(), merge, out);
+    out.mergedCharts = mergeSmallCharts(mesh, adjacency.opposite.data(), normals.get(), merge, out);
     // Rings and long diagonals into compact pieces (chart_split.h).
     ChartSplitOptions split;
     split.minFill = options.minChartFill;
