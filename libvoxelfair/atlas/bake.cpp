@@ -356,11 +356,19 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
             },
             rowFrom, rowTo);
     };
-    auto paintOverlapped = [&](size_t f, const glm::dvec2 *q, int rowFrom, int rowTo) __attribute__((noinline)) {
+    // A face's UV box in texels, found once for its overlaps and thin points.
+    struct Box {
+        double minX, maxX, minY, maxY;
+    };
+    auto boxOf = [](const glm::dvec2 *q) {
+        return Box{min3(q[0].x, q[1].x, q[2].x), max3(q[0].x, q[1].x, q[2].x), min3(q[0].y, q[1].y, q[2].y),
+                   max3(q[0].y, q[1].y, q[2].y)};
+    };
+    auto paintOverlapped = [&](size_t f, const glm::dvec2 *q, const Box &b, int rowFrom, int rowTo)
+        __attribute__((noinline)) {
         // The conservative raster's box (raster_detail::conservativeBox), within the rows asked.
-        const raster_detail::TexelBox box = raster_detail::conservativeBox(
-            min3(q[0].x, q[1].x, q[2].x), max3(q[0].x, q[1].x, q[2].x), min3(q[0].y, q[1].y, q[2].y),
-            max3(q[0].y, q[1].y, q[2].y), kBakeMargin, width, height);
+        const raster_detail::TexelBox box =
+            raster_detail::conservativeBox(b.minX, b.maxX, b.minY, b.maxY, kBakeMargin, width, height);
         if (box.x0 > box.x1)
             return;
         const int y0 = std::max(rowFrom, box.y0), y1 = std::min(rowTo, box.y1);
@@ -393,7 +401,8 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
     // closer than sqrt(2) + 0.01 texels), so the order does not matter; it is the faces' order
     // anyway (a texel under two thin faces, over the separation budget, takes the later one's
     // colour). Only rows rowFrom..rowTo; points off the texture paint its nearest texels.
-    auto paintThin = [&](size_t f, const glm::dvec2 *q, int rowFrom, int rowTo) __attribute__((noinline)) {
+    auto paintThin = [&](size_t f, const glm::dvec2 *q, const Box &b, int rowFrom, int rowTo)
+        __attribute__((noinline)) {
         glm::dvec2 points[4] = {};
         const double inradius = faceInteriorPoints(q, points);
         if (!(inradius > 0 && inradius < std::sqrt(2.0) + 2 * kUvRounding))
@@ -408,8 +417,7 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
         };
         // The points lie in the corners' box: when it is well inside (-1, width) x (-1, height),
         // clamping onto the texture changes no texel and the texels are the truncations.
-        if (min3(q[0].x, q[1].x, q[2].x) > -0.5 && max3(q[0].x, q[1].x, q[2].x) < width - 0.5 &&
-            min3(q[0].y, q[1].y, q[2].y) > -0.5 && max3(q[0].y, q[1].y, q[2].y) < height - 0.5) {
+        if (b.minX > -0.5 && b.maxX < width - 0.5 && b.minY > -0.5 && b.maxY < height - 0.5) {
             for (const glm::dvec2 &p : points) {
                 const int x0 = int(p.x - kUvRounding), x1 = int(p.x + kUvRounding);
                 const int y0 = int(p.y - kUvRounding), y1 = int(p.y + kUvRounding);
@@ -453,9 +461,10 @@ AtlasTexture bakeTexture(const AtlasMesh &mesh, const AtlasLayout &layout, const
         if (uniform)
             bands.forEachFace(band, [&](size_t f) {
                 load(f, q);
-                paintOverlapped(f, q, rowFrom, rowTo);
+                const Box b = boxOf(q);
+                paintOverlapped(f, q, b, rowFrom, rowTo);
                 if (crisp)
-                    paintThin(f, q, rowFrom, rowTo);
+                    paintThin(f, q, b, rowFrom, rowTo);
             });
     });
     out.dilation = options.dilation < 0 ? layout.gutter / 2 : std::min(options.dilation, width);
