@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 namespace voxelfair::atlastest {
 
 // The widest cone of the default charts: merged small charts' faces (chart_merge.h).
@@ -31,6 +33,20 @@ inline void expectValidAtlas(const TestMesh &mesh, const AtlasCharts &charts, co
     EXPECT_LE(m.maxStretch, 1.0 + 1e-3);
     EXPECT_LE(m.maxInverseStretch, 1.0 / cone + 1e-3);
     EXPECT_GT(m.packingEfficiency, 0.0);
+}
+
+// Charts computed on another thread count: the same charts, UVs and counts as the reference.
+inline void expectSameCharts(const AtlasCharts &charts, const AtlasCharts &reference, int threads) {
+    SCOPED_TRACE(std::to_string(threads) + " threads");
+    EXPECT_EQ(charts.chartFaces, reference.chartFaces);
+    EXPECT_EQ(charts.chartFirstFace, reference.chartFirstFace);
+    EXPECT_EQ(charts.faceChart, reference.faceChart);
+    EXPECT_EQ(charts.wedgeUv, reference.wedgeUv);
+    EXPECT_EQ(charts.chartAxis, reference.chartAxis);
+    EXPECT_EQ(charts.chartSize, reference.chartSize);
+    EXPECT_EQ(charts.mergedCharts, reference.mergedCharts);
+    EXPECT_EQ(charts.splitCharts, reference.splitCharts);
+    EXPECT_EQ(charts.foldedCharts, reference.foldedCharts);
 }
 
 }  // namespace voxelfair::atlastest

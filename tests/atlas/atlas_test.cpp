@@ -382,12 +382,7 @@ TEST(Charts, FoldChecksOnThreadsGiveTheSameCharts) {
     for (int threads : {2, 5}) {
         ChartOptions options;
         options.threads = threads;
-        const AtlasCharts charts = computeCharts(mesh.view(), options);
-        EXPECT_EQ(charts.chartFaces, reference.chartFaces) << threads << " threads";
-        EXPECT_EQ(charts.chartFirstFace, reference.chartFirstFace) << threads << " threads";
-        EXPECT_EQ(charts.wedgeUv, reference.wedgeUv) << threads << " threads";
-        EXPECT_EQ(charts.chartAxis, reference.chartAxis) << threads << " threads";
-        EXPECT_EQ(charts.foldedCharts, reference.foldedCharts) << threads << " threads";
+        expectSameCharts(computeCharts(mesh.view(), options), reference, threads);
     }
 }
 

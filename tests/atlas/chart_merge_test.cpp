@@ -4,6 +4,7 @@
 // with small charts of up to 8 faces (the default) and of up to 100 (then charts with grids move
 // too, and charts grown past the grid size by merges get theirs late).
 #include "atlas/charts.h"
+#include "atlas_checks.h"
 #include "shapes/atlas_test_meshes.h"
 
 #include <gtest/gtest.h>
@@ -30,14 +31,7 @@ TEST(ChartMerge, MergesOnThreadsGiveTheSameCharts) {
             for (const int threads : {2, 5}) {
                 ChartOptions options = one;
                 options.threads = threads;
-                const AtlasCharts charts = computeCharts(shape.view(), options);
-                EXPECT_EQ(charts.mergedCharts, reference.mergedCharts) << threads << " threads";
-                EXPECT_EQ(charts.chartFaces, reference.chartFaces) << threads << " threads";
-                EXPECT_EQ(charts.chartFirstFace, reference.chartFirstFace) << threads << " threads";
-                EXPECT_EQ(charts.faceChart, reference.faceChart) << threads << " threads";
-                EXPECT_EQ(charts.wedgeUv, reference.wedgeUv) << threads << " threads";
-                EXPECT_EQ(charts.chartAxis, reference.chartAxis) << threads << " threads";
-                EXPECT_EQ(charts.chartSize, reference.chartSize) << threads << " threads";
+                expectSameCharts(computeCharts(shape.view(), options), reference, threads);
             }
         }
 }

@@ -4,6 +4,7 @@
 // voxel sphere above the parallel threshold: every face's chart is the one whose range holds
 // it, each ring is cut, and the charts are those of one thread on 2 and 5.
 #include "atlas/charts.h"
+#include "atlas_checks.h"
 #include "shapes/atlas_test_meshes.h"
 
 #include <gtest/gtest.h>
@@ -58,13 +59,6 @@ TEST(ChartSplit, CutChartsAmongOthersGiveTheSameChartsOnThreads) {
     for (const int threads : {2, 5}) {
         ChartOptions options;
         options.threads = threads;
-        const AtlasCharts charts = computeCharts(mesh.view(), options);
-        EXPECT_EQ(charts.splitCharts, reference.splitCharts) << threads << " threads";
-        EXPECT_EQ(charts.chartFaces, reference.chartFaces) << threads << " threads";
-        EXPECT_EQ(charts.chartFirstFace, reference.chartFirstFace) << threads << " threads";
-        EXPECT_EQ(charts.faceChart, reference.faceChart) << threads << " threads";
-        EXPECT_EQ(charts.wedgeUv, reference.wedgeUv) << threads << " threads";
-        EXPECT_EQ(charts.chartAxis, reference.chartAxis) << threads << " threads";
-        EXPECT_EQ(charts.chartSize, reference.chartSize) << threads << " threads";
+        expectSameCharts(computeCharts(mesh.view(), options), reference, threads);
     }
 }
