@@ -1,5 +1,7 @@
 #include "atlas/chart_overlap.h"
 
+#include "base/radix_sort.h"
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -18,10 +20,9 @@ bool cross(const ChartBoundaryEdge &e, const ChartBoundaryEdge &f) {
     return ((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0));
 }
 
-// Corners ordered by (vertex, from), equal pairs in their given order. A few are
-// insertion-sorted; more are radix-sorted by vertex (8 bits a pass, passes where every vertex
-// has the same digit skipped), then each vertex's handful insertion-sorted by angle: linear in
-// the corners where a comparison sort was a third of the fold checks on large meshes.
+// Corners ordered by (vertex, from), equal pairs in their given order: radix-sorted by vertex
+// (base/radix_sort.h), then each vertex's handful insertion-sorted by angle: linear in the
+// corners where a comparison sort was a third of the fold checks on large meshes.
 void insertionSort(ChartCorner *begin, ChartCorner *end) {
     auto before = [](const ChartCorner &a, const ChartCorner &b) {
         return a.vertex != b.vertex ? a.vertex < b.vertex : a.from < b.from;
@@ -36,30 +37,11 @@ void insertionSort(ChartCorner *begin, ChartCorner *end) {
 }
 
 void sortCorners(std::vector<ChartCorner> &corners) {
-    const size_t n = corners.size();
-    if (n <= 16) {
-        insertionSort(corners.data(), corners.data() + n);
-        return;
-    }
-    constexpr int kDigits = 4;
-    size_t count[kDigits][256] = {};
-    for (const ChartCorner &c : corners)
-        for (int d = 0; d < kDigits; ++d)
-            ++count[d][(c.vertex >> (8 * d)) & 0xFF];
-    std::vector<ChartCorner> sorted(n);
-    for (int d = 0; d < kDigits; ++d) {
-        if (std::find(count[d], count[d] + 256, n) != count[d] + 256)
-            continue;
-        size_t at = 0;
-        for (size_t &k : count[d])
-            at += std::exchange(k, at);
-        for (const ChartCorner &c : corners)
-            sorted[count[d][(c.vertex >> (8 * d)) & 0xFF]++] = c;
-        corners.swap(sorted);
-    }
-    for (size_t i = 0; i < n;) {
+    std::vector<ChartCorner> scratch;
+    radixSortStable(corners, scratch, [](const ChartCorner &c) { return c.vertex; });
+    for (size_t i = 0; i < corners.size();) {
         size_t j = i + 1;
-        while (j < n && corners[j].vertex == corners[i].vertex)
+        while (j < corners.size() && corners[j].vertex == corners[i].vertex)
             ++j;
         insertionSort(corners.data() + i, corners.data() + j);
         i = j;

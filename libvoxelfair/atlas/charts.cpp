@@ -8,6 +8,7 @@
 #include "atlas/seed_plane.h"
 #include "atlas/texel_raster.h"
 #include "base/parallel_bands.h"
+#include "base/radix_sort.h"
 
 #include <algorithm>
 #include <atomic>
@@ -37,33 +38,6 @@ double diamondAngle(glm::dvec2 d) {
 }
 
 bool finite(const glm::vec3 &v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
-// Stable LSD radix sort of 64-bit words by their upper 32 bits (ascending), 12 bits per pass,
-// every digit's histogram taken in one read, passes where every word has the same digit skipped
-// (the seed keys' top digit always is). Linear time for the seed order of large meshes; the
-// order equals any stable sort's.
-void radixSortByHighWord(std::vector<uint64_t> &words) {
-    constexpr int kBits = 12, kDigits = 3;  // 12 + 12 + 8 bits
-    constexpr size_t kRadix = size_t(1) << kBits;
-    const size_t n = words.size();
-    std::vector<size_t> count(kDigits * kRadix, 0);
-    for (const uint64_t w : words)
-        for (int d = 0; d < kDigits; ++d)
-            ++count[d * kRadix + ((w >> (32 + d * kBits)) & (kRadix - 1))];
-    std::vector<uint64_t> sorted(n);
-    for (int d = 0; d < kDigits; ++d) {
-        size_t *digitCount = count.data() + d * kRadix;
-        if (std::find(digitCount, digitCount + kRadix, n) != digitCount + kRadix)
-            continue;
-        size_t at = 0;
-        for (size_t v = 0; v < kRadix; ++v)
-            at += std::exchange(digitCount[v], at);
-        const int shift = 32 + d * kBits;
-        for (const uint64_t w : words)
-            sorted[digitCount[(w >> shift) & (kRadix - 1)]++] = w;
-        words.swap(sorted);
-    }
-}
 
 }  // namespace
 
@@ -141,7 +115,8 @@ AtlasCharts computeCharts(const AtlasMesh &mesh, const ChartOptions &options) {
             std::memcpy(&bits, &priority, sizeof bits);
             keyed.push_back((uint64_t(~bits) << 32) | f);
         }
-        radixSortByHighWord(keyed);
+        std::vector<uint64_t> scratch;
+        radixSortStable(keyed, scratch, [](uint64_t w) { return uint32_t(w >> 32); });
         order.resize(keyed.size());
         for (size_t i = 0; i < keyed.size(); ++i)
             order[i] = uint32_t(keyed[i]);
